@@ -1,0 +1,260 @@
+// `granule run`: validate a configuration, prepare the initial state of thesis §1.4.2 (elastic
+// pre-run included), run the event loop and write the outputs documented in README.md.
+#include "app/run_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "app/progress.hpp"
+#include "engine/simulation.hpp"
+#include "granule/version.hpp"
+#include "io/atomic_file.hpp"
+#include "io/config.hpp"
+#include "io/snapshot_file.hpp"
+#include "io/timeseries_csv.hpp"
+#include "observers/global_diagnostics.hpp"
+#include "theory/steady_shear.hpp"
+
+namespace granule::app {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
+// Exit codes: 2 bad input (nothing written), 3 stopped by inelastic collapse (outputs written).
+constexpr int kExitBadInput = 2;
+constexpr int kExitCollapse = 3;
+
+struct RunOptions {
+  std::string config_path;
+  std::vector<std::string> overrides;
+  std::string out_dir;
+};
+
+// A recurring output trigger, in collisions per particle or in time.
+struct Schedule {
+  std::optional<double> every_c;
+  std::optional<double> every_t;
+  std::int64_t next_collisions = kNoLimit;
+  double next_time = kInf;
+  std::int64_t particles = 1;
+
+  void start(std::int64_t n) {
+    particles = n;
+    if (every_c && *every_c > 0.0) next_collisions = collisions_at(*every_c);
+    if (every_t) next_time = *every_t;
+  }
+  std::int64_t collisions_at(double c) const { return std::llround(c * static_cast<double>(particles)); }
+  bool due(const Simulation& sim) const { return sim.collisions() >= next_collisions || sim.time() >= next_time; }
+  void advance(const Simulation& sim) {
+    while (every_c && *every_c > 0.0 && sim.collisions() >= next_collisions) {
+      next_collisions = collisions_at(static_cast<double>(next_collisions) / static_cast<double>(particles) + *every_c);
+    }
+    while (every_t && sim.time() >= next_time) next_time += *every_t;
+  }
+};
+
+const char* stop_text(StopReason reason) {
+  switch (reason) {
+    case StopReason::kTimeReached: return "time reached";
+    case StopReason::kCollisionsReached: return "collisions reached";
+    case StopReason::kNoEvents: return "no further events";
+    case StopReason::kInelasticCollapse: return "inelastic collapse";
+  }
+  return "unknown";
+}
+
+nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, const CellGrid& grid,
+                            double wall_seconds, StopReason reason, std::int64_t equilibrate_collisions,
+                            std::int64_t snapshots, const std::vector<DiagnosticsSample>& samples) {
+  const SystemParams& s = config.system;
+  nlohmann::json j;
+  j["version"] = kVersion;
+  j["particles"] = s.particles;
+  j["diameter"] = s.diameter;
+  j["area_fraction"] = config.area_fraction;
+  j["box"] = {s.length_x, s.length_y};
+  j["restitution"] = s.restitution;
+  j["tc_duration"] = s.tc_duration;
+  j["boundary"] = config.lees_edwards ? "lees-edwards" : "periodic";
+  j["shear_velocity"] = s.shear_velocity;
+  j["seed"] = config.seed;
+  j["collisions"] = sim.collisions();
+  j["events"] = sim.events();
+  j["equilibrate_collisions"] = equilibrate_collisions;
+  j["wall_seconds"] = wall_seconds;
+  j["collisions_per_second"] = wall_seconds > 0.0 ? static_cast<double>(sim.collisions()) / wall_seconds : 0.0;
+  j["t"] = sim.time();
+  j["c"] = sim.collisions_per_particle();
+  j["stop_reason"] = stop_text(reason);
+  j["snapshots"] = snapshots;
+  j["engine_cells"] = {grid.nx, grid.ny};
+  j["bytes_per_particle"] = sim.bytes_per_particle();
+  if (config.lees_edwards && !samples.empty()) {
+    // Steady-shear temperature: measured T̄ (mean over the second half of the samples) beside
+    // the thesis's fit (3.1) and the Jenkins–Richman dilute law (3.2).
+    const std::size_t from = samples.size() / 2;
+    double sum = 0.0;
+    for (std::size_t k = from; k < samples.size(); ++k) sum += samples[k].temperature;
+    const double gamma = s.shear_velocity / s.length_y;
+    j["steady_shear"] = {
+        {"temperature_measured", sum / static_cast<double>(samples.size() - from)},
+        {"measured_over_c", {samples[from].c, samples.back().c}},
+        {"temperature_tan_fit_eq_3_1", theory::steady_shear_temperature_tan_fit(s.restitution, gamma, s.diameter, config.area_fraction)},
+        {"temperature_jenkins_richman_eq_3_2",
+         theory::steady_shear_temperature_jenkins_richman(s.restitution, gamma, s.diameter, config.area_fraction)},
+    };
+  }
+  return j;
+}
+
+int run(const RunOptions& options) {
+  // 1. Everything that can be wrong with the input is found before anything is written.
+  const ConfigResult parsed = options.config_path.empty()
+                                  ? parse_config(default_example_toml(), options.overrides)
+                                  : load_config_file(options.config_path, options.overrides);
+  if (!parsed.config) {
+    fmt::print(stderr, "granule run: error: {}\n", parsed.error);
+    return kExitBadInput;
+  }
+  const RunConfig& config = *parsed.config;
+  const SystemParams& system = config.system;
+  const CellGridChoice choice = choose_cell_grid({system.length_x, system.length_y, system.diameter, system.particles,
+                                                  config.lees_edwards, config.particles_per_cell, config.engine_cells});
+  if (!choice.grid) {
+    fmt::print(stderr, "granule run: error: {}\n", choice.error);
+    return kExitBadInput;
+  }
+  const InitialStateResult initial = make_initial_state(system, config.initial_temperature, config.seed, config.placement);
+  if (!initial.error.empty()) {
+    fmt::print(stderr, "granule run: error: {} (system.area_fraction = {:.4g})\n", initial.error, config.area_fraction);
+    return kExitBadInput;
+  }
+  const std::string out = options.out_dir;
+  std::filesystem::create_directories(out);
+  write_file_atomically(out + "/config.toml", to_toml(config));
+  fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, system.particles,
+             config.area_fraction, system.diameter, system.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic",
+             system.length_x, system.length_y,
+             config.lees_edwards ? fmt::format(", U = {}", system.shear_velocity) : std::string{});
+
+  // 2. The elastic pre-run of thesis §1.4.2, then the restitution is switched on at t = c = 0.
+  SystemParams elastic = system;
+  elastic.restitution = 1.0;
+  Simulation sim(elastic, *choice.grid, initial.state);
+  Progress progress;
+  const auto equilibrate_collisions = std::llround(config.equilibrate * static_cast<double>(system.particles));
+  if (equilibrate_collisions > 0) {
+    fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
+    if (sim.run(kInf, equilibrate_collisions) == StopReason::kNoEvents) {
+      fmt::print(stderr, "granule run: the elastic pre-run has no events (all disks at rest?)\n");
+    }
+  }
+  sim.start_production(system.restitution);
+  sim.synchronize();
+
+  GlobalDiagnostics diagnostics(system, config.diagnostic_cells.first, config.diagnostic_cells.second);
+  sim.add_observer(&diagnostics);
+  std::vector<DiagnosticsSample> samples{diagnostics.sample(sim.state(), sim.time(), sim.collisions())};
+  SnapshotWriter snapshots(out + "/snapshots.h5", {system, config.area_fraction,
+                                                   config.lees_edwards ? "lees-edwards" : "periodic", config.seed, kVersion});
+  std::int64_t last_snapshot_events = -1;
+  auto write_snapshot = [&] {
+    sim.synchronize();
+    last_snapshot_events = sim.events();
+    snapshots.append({sim.state(), sim.clock_state(), sim.collisions_per_particle(), sim.shear_offset(), sim.strain()});
+  };
+  write_snapshot();
+
+  Schedule sampling{config.sample_every_collisions_per_particle, config.sample_every_time};
+  Schedule snapshotting{config.snapshot_every_collisions_per_particle, config.snapshot_every_time};
+  sampling.start(system.particles);
+  snapshotting.start(system.particles);
+  const std::int64_t until_collisions = config.until_collisions_per_particle
+                                            ? std::llround(*config.until_collisions_per_particle * static_cast<double>(system.particles))
+                                            : kNoLimit;
+  const double until_time = config.until_time.value_or(kInf);
+  const std::int64_t chunk = std::max<std::int64_t>(1000, system.particles / 4);  // progress granularity
+
+  // 3. The main loop: run to the next output, write it, repeat.
+  const double wall_start = progress.seconds_since_start();
+  double last_csv_write = wall_start;
+  StopReason reason = StopReason::kCollisionsReached;
+  while (true) {
+    const std::int64_t target = std::min({until_collisions, sampling.next_collisions, snapshotting.next_collisions,
+                                          sim.collisions() + chunk});
+    reason = sim.run(std::min({until_time, sampling.next_time, snapshotting.next_time}), target);
+    const bool finished = reason == StopReason::kInelasticCollapse || reason == StopReason::kNoEvents ||
+                          sim.collisions() >= until_collisions || sim.time() >= until_time;
+    if (snapshotting.due(sim)) {
+      write_snapshot();
+      snapshotting.advance(sim);
+    }
+    if (sampling.due(sim) || finished) {
+      samples.push_back(diagnostics.sample(sim.state(), sim.time(), sim.collisions()));
+      sampling.advance(sim);
+      const double now = progress.seconds_since_start();
+      if (now - last_csv_write > 10.0) {  // keep the file current on long runs
+        write_timeseries(out + "/timeseries.csv", samples);
+        last_csv_write = now;
+      }
+    }
+    const double elapsed = progress.seconds_since_start() - wall_start;
+    const double fraction = std::max(until_collisions == kNoLimit ? 0.0 : static_cast<double>(sim.collisions()) / static_cast<double>(until_collisions),
+                                     std::isfinite(until_time) ? sim.time() / until_time : 0.0);
+    progress.update(std::min(1.0, fraction), sim.collisions_per_particle(), sim.time(),
+                    elapsed > 0.0 ? static_cast<double>(sim.collisions()) / elapsed : 0.0);
+    if (finished) break;
+  }
+  progress.finish();
+  const double wall_seconds = progress.seconds_since_start() - wall_start;
+
+  // 4. Final state, time series and summary.
+  if (last_snapshot_events != sim.events()) write_snapshot();
+  snapshots.finish();
+  write_timeseries(out + "/timeseries.csv", samples);
+  const nlohmann::json summary = summary_json(config, sim, *choice.grid, wall_seconds, reason, equilibrate_collisions,
+                                              snapshots.frames(), samples);
+  write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+
+  fmt::print("finished ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n", stop_text(reason),
+             sim.time(), sim.collisions_per_particle(), sim.collisions(), wall_seconds,
+             summary["collisions_per_second"].get<double>());
+  fmt::print("outputs in {}: config.toml, timeseries.csv, summary.json, snapshots.h5 ({} frames)\n", out, snapshots.frames());
+  if (reason == StopReason::kInelasticCollapse) {
+    const CollapseReport& c = sim.collapse();
+    fmt::print(stderr,
+               "granule run: stopped by inelastic collapse at t = {:.9g} (c = {:.6g}): disks {} and {} near ({:.4g}, {:.4g})"
+               " collided ever faster until the clock stopped advancing (McNamara & Young 1994).\n"
+               "  The last state is saved in {}/snapshots.h5.  Switch on the TC model to continue, e.g.\n"
+               "    --set system.tc_duration={:.3g}\n"
+               "  (much shorter than the mean free time {:.3g}).\n",
+               c.time, sim.collisions_per_particle(), c.first, c.second, c.position.x, c.position.y, out,
+               1e-6 * (samples.back().collision_rate > 0 ? 1.0 / samples.back().collision_rate : 1.0),
+               samples.back().collision_rate > 0 ? 1.0 / samples.back().collision_rate : 0.0);
+    return kExitCollapse;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& root) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* command = root.add_subcommand(
+      "run", "Run a simulation from a TOML config (or the built-in example: free cooling of a scaled-down "
+             "System II of Tan 1995, N = 20000, ν = 0.05, e = 0.6).");
+  command->add_option("config", options->config_path, "TOML configuration file (keys: see README.md)")
+      ->check(CLI::ExistingFile);
+  command->add_option("--set", options->overrides, "Override a config key, e.g. --set system.restitution=0.8 (repeatable)");
+  command->add_option("--out", options->out_dir, "Output directory")->default_val("granule-run");
+  command->callback([options] { throw CLI::RuntimeError(run(*options)); });
+}
+
+}  // namespace granule::app

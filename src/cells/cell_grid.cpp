@@ -1,0 +1,89 @@
+#include "cells/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace granule {
+
+namespace {
+// Relative safety margin on the minimum cell size: round-off must never hide a contact pair.
+constexpr double kCellMargin = 1e-9;
+constexpr int kMinCells = 3;
+
+std::string fmt_double(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+}  // namespace
+
+CellGridChoice choose_cell_grid(const CellGridRequest& request) {
+  const double lx = request.length_x;
+  const double ly = request.length_y;
+  const double sigma = request.diameter * (1.0 + kCellMargin);
+  // Minimum strain half-period: one box width of offset, |s| ≤ L_x / (2 L_y).
+  const double s_min = request.sheared ? 0.5 * lx / ly : 0.0;
+  const double min_width = sigma * std::sqrt(1.0 + s_min * s_min);
+  const double min_height = sigma;
+  const int max_nx = static_cast<int>(std::floor(lx / min_width));
+  const int max_ny = static_cast<int>(std::floor(ly / min_height));
+
+  CellGrid grid;
+  if (request.forced) {
+    grid.nx = request.forced->first;
+    grid.ny = request.forced->second;
+    if (grid.nx < kMinCells || grid.ny < kMinCells || grid.nx > max_nx || grid.ny > max_ny) {
+      return {std::nullopt, "engine.cells = [" + std::to_string(grid.nx) + ", " +
+                                std::to_string(grid.ny) + "] is not allowed: each count must be in [" +
+                                std::to_string(kMinCells) + ", " + std::to_string(max_nx) +
+                                "] × [" + std::to_string(kMinCells) + ", " +
+                                std::to_string(max_ny) + "] for this box and diameter"};
+    }
+  } else {
+    if (max_nx < kMinCells || max_ny < kMinCells) {
+      return {std::nullopt,
+              "the box " + fmt_double(lx) + " × " + fmt_double(ly) +
+                  " is too small for the cell grid: it needs at least 3 cells of size ≥ " +
+                  fmt_double(min_width) + " × " + fmt_double(min_height) +
+                  " per direction (diameter " + fmt_double(request.diameter) +
+                  "); enlarge system.box or reduce the diameter"};
+    }
+    const double cell_area =
+        request.particles_per_cell * lx * ly / static_cast<double>(std::max<std::int64_t>(1, request.particles));
+    const double side = std::sqrt(cell_area);
+    grid.nx = std::clamp(static_cast<int>(std::floor(lx / side)), kMinCells, max_nx);
+    grid.ny = std::clamp(static_cast<int>(std::floor(ly / side)), kMinCells, max_ny);
+  }
+  grid.width = lx / grid.nx;
+  grid.height = ly / grid.ny;
+  if (request.sheared) {
+    // Largest strain at which a contact pair still spans at most one column: σ√(1+s²) ≤ width.
+    const double ratio = grid.width / sigma;
+    const double s_allowed = std::sqrt(std::max(0.0, ratio * ratio - 1.0));
+    const int periods = std::max(1, static_cast<int>(std::floor(2.0 * s_allowed * ly / lx)));
+    grid.strain_period = periods * lx / ly;
+  }
+  return {grid, {}};
+}
+
+void CellLists::reset(int cells, std::int64_t particles) {
+  head_.assign(static_cast<std::size_t>(cells), kEnd);
+  next_.assign(static_cast<std::size_t>(particles), kEnd);
+}
+
+void CellLists::insert(std::int32_t particle, std::int32_t cell) {
+  auto& head = head_[static_cast<std::size_t>(cell)];
+  next_[static_cast<std::size_t>(particle)] = head;
+  head = particle;
+}
+
+void CellLists::remove(std::int32_t particle, std::int32_t cell) {
+  // Cells hold one or two particles on average (thesis A.2), so a walk beats a back-link.
+  std::int32_t* link = &head_[static_cast<std::size_t>(cell)];
+  while (*link != particle) link = &next_[static_cast<std::size_t>(*link)];
+  *link = next_[static_cast<std::size_t>(particle)];
+}
+
+}  // namespace granule

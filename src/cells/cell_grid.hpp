@@ -1,0 +1,63 @@
+// The simulation's cell grid on the sheared frame (ξ, y) and its per-cell particle lists
+// (thesis Appendix A.1: collisions are searched in the 3×3 block of cells around a particle).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granule {
+
+struct CellGrid {
+  int nx = 0;           // columns in ξ
+  int ny = 0;           // rows in y
+  double width = 0.0;   // column width in ξ (length units)
+  double height = 0.0;  // row height
+  // Lees–Edwards: the grid is re-aligned whenever |strain| reaches strain_period/2; the period
+  // is a multiple of L_x/L_y so that the sheared frame stays exactly periodic (shear_frame.hpp).
+  double strain_period = 0.0;
+
+  int cell_count() const { return nx * ny; }
+  int index(int column, int row) const { return row * nx + column; }
+  int column_of(int cell) const { return cell % nx; }
+  int row_of(int cell) const { return cell / nx; }
+};
+
+struct CellGridRequest {
+  double length_x = 1.0;
+  double length_y = 1.0;
+  double diameter = 0.0;
+  std::int64_t particles = 0;
+  bool sheared = false;
+  double particles_per_cell = 1.0;           // target mean occupancy (thesis A.2: 1–2 is optimal)
+  std::optional<std::pair<int, int>> forced;  // user override [nx, ny]
+};
+
+// The grid for a box, or an explanation of why none fits (fewer than 3 cells per direction,
+// or a forced grid with cells narrower than a disk can reach).  Contact pairs must always lie in
+// neighbouring cells: rows at least σ high, columns at least σ√(1 + s_max²) wide in ξ.
+struct CellGridChoice {
+  std::optional<CellGrid> grid;
+  std::string error;
+};
+CellGridChoice choose_cell_grid(const CellGridRequest& request);
+
+// Singly linked particle lists per cell: a head per cell, a next per particle (plain ids).
+class CellLists {
+ public:
+  void reset(int cells, std::int64_t particles);
+  void insert(std::int32_t particle, std::int32_t cell);
+  void remove(std::int32_t particle, std::int32_t cell);
+  std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
+  std::int32_t next(std::int32_t particle) const { return next_[static_cast<std::size_t>(particle)]; }
+  std::size_t bytes() const { return (head_.capacity() + next_.capacity()) * sizeof(std::int32_t); }
+
+  static constexpr std::int32_t kEnd = -1;
+
+ private:
+  std::vector<std::int32_t> head_;
+  std::vector<std::int32_t> next_;
+};
+
+}  // namespace granule

@@ -1,0 +1,30 @@
+// What measuring code sees of the dynamics: a record per collision, delivered as it happens.
+// The engine knows observers only through this interface (thesis quantities such as the
+// collisional stress (1.6), impact parameters and free paths are built from these records).
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/vec2.hpp"
+
+namespace granule {
+
+struct CollisionRecord {
+  double time = 0.0;             // absolute simulation time of contact
+  std::int32_t first = 0;        // disk "1" of thesis Fig 1.3
+  std::int32_t second = 0;       // disk "2"
+  Vec2 first_position;           // lab position of disk 1 at contact (inside the box)
+  Vec2 contact_normal;           // k̂: unit vector from disk 1 to (the image of) disk 2
+  Vec2 relative_velocity;        // v21 = v1 − v2 before the collision (image-shifted)
+  double impulse = 0.0;          // J·k̂ = (1 + e)/2 (v21·k̂) > 0, momentum given to disk 2
+  double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
+  int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1)
+};
+
+class EventObserver {
+ public:
+  virtual ~EventObserver() = default;
+  virtual void on_collision(const CollisionRecord& record) = 0;
+};
+
+}  // namespace granule

@@ -1,0 +1,44 @@
+// Physical and numerical parameters of one simulated system, in the thesis's units
+// (unit mass; lengths in the units of the box; time in the units implied by the velocities).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace granule {
+
+struct SystemParams {
+  std::int64_t particles = 0;
+  double diameter = 0.0;        // σ
+  double length_x = 1.0;        // L_x
+  double length_y = 1.0;        // L_y
+  double restitution = 1.0;     // ẽ ∈ (0, 1], thesis eq (1.2)
+  double shear_velocity = 0.0;  // U: Lees–Edwards image velocity; 0 for a periodic box
+  // TC model (Luding & McNamara 1998): a collision is elastic if either partner collided less
+  // than tc_duration ago.  0 switches it off.
+  double tc_duration = 0.0;
+};
+
+// Positions and velocities in the lab frame, one entry per particle.
+struct ParticleState {
+  std::vector<double> x, y, vx, vy;
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n) {
+    x.resize(n);
+    y.resize(n);
+    vx.resize(n);
+    vy.resize(n);
+  }
+};
+
+// Everything besides positions and velocities that a synchronised engine needs to continue a
+// run exactly (stored with every snapshot, read back on restart).
+struct ClockState {
+  double time = 0.0;                 // absolute simulation time
+  double strain_reference = 0.0;     // t_ref − t (≤ 0): when the sheared grid was last aligned
+  std::int64_t collisions = 0;       // since the restitution was switched on
+  std::int64_t events = 0;
+  std::vector<double> last_collision;  // TC model only: time of each disk's last collision − t
+};
+
+}  // namespace granule

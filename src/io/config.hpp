@@ -1,0 +1,50 @@
+// The run configuration: a TOML file plus `--set section.key=value` overrides, validated in full
+// before anything is written.  Every key, its range and default are listed in README.md.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/system_params.hpp"
+#include "init/initial_state.hpp"
+
+namespace granule {
+
+struct RunConfig {
+  std::uint64_t seed = 1;
+  SystemParams system;           // diameter always resolved
+  double area_fraction = 0.0;    // ν = πNσ²/(4 L_x L_y), always resolved
+  bool lees_edwards = false;
+  double initial_temperature = 1.0;
+  double equilibrate = 0.0;      // elastic collisions per particle before e is switched on
+  Placement placement = Placement::kAuto;
+  std::optional<double> until_collisions_per_particle;
+  std::optional<double> until_time;
+  std::optional<double> sample_every_collisions_per_particle;
+  std::optional<double> sample_every_time;
+  std::optional<double> snapshot_every_collisions_per_particle;  // 0: only the final state
+  std::optional<double> snapshot_every_time;
+  double particles_per_cell = 1.0;
+  std::optional<std::pair<int, int>> engine_cells;
+  std::pair<int, int> diagnostic_cells{0, 0};  // resolved (auto: ~20 disks per cell)
+};
+
+struct ConfigResult {
+  std::optional<RunConfig> config;
+  std::string error;  // names the key, the value and the allowed range
+};
+
+// `text` is TOML (may be empty: the built-in defaults); `overrides` are "section.key=value".
+ConfigResult parse_config(const std::string& text, const std::vector<std::string>& overrides);
+ConfigResult load_config_file(const std::string& path, const std::vector<std::string>& overrides);
+
+// The fully resolved configuration as TOML, so that any run can be repeated exactly.
+std::string to_toml(const RunConfig& config);
+
+// The built-in default example: a scaled-down System II of thesis §2.1 (free cooling, e = 0.6).
+std::string default_example_toml();
+
+}  // namespace granule

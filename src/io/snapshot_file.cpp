@@ -1,0 +1,257 @@
+#include "io/snapshot_file.hpp"
+
+#include <hdf5.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace granule {
+
+namespace {
+
+constexpr const char* kFormat = "granule-snapshots";
+constexpr int kFormatVersion = 1;
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5 error while " + what);
+}
+hid_t check_id(hid_t id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5 error while " + what);
+  return id;
+}
+
+void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1) {
+  const hid_t space = count == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &count, nullptr);
+  const hid_t attribute = check_id(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), name);
+  check(H5Awrite(attribute, type, data), name);
+  H5Aclose(attribute);
+  H5Sclose(space);
+}
+
+void write_string_attribute(hid_t object, const char* name, const std::string& value) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() + 1);
+  H5Tset_strpad(type, H5T_STR_NULLTERM);
+  write_attribute(object, name, type, value.c_str());
+  H5Tclose(type);
+}
+
+template <typename T>
+T read_attribute(hid_t object, const char* name, hid_t type) {
+  T value{};
+  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
+  check(H5Aread(attribute, type, &value), name);
+  H5Aclose(attribute);
+  return value;
+}
+
+std::string read_string_attribute(hid_t object, const char* name) {
+  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
+  const hid_t type = H5Aget_type(attribute);
+  const hid_t memory = H5Tcopy(H5T_C_S1);
+  std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
+  H5Tset_size(memory, buffer.size());
+  check(H5Aread(attribute, memory, buffer.data()), name);
+  H5Tclose(memory);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  return buffer.data();
+}
+
+// An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
+hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row) {
+  std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
+  for (hsize_t d : row) {
+    dims.push_back(d);
+    max.push_back(d);
+    chunk.push_back(d);
+  }
+  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data());
+  const hid_t properties = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_chunk(properties, static_cast<int>(chunk.size()), chunk.data());
+  const hid_t dataset = check_id(H5Dcreate2(file, name, type, space, H5P_DEFAULT, properties, H5P_DEFAULT), name);
+  H5Pclose(properties);
+  H5Sclose(space);
+  return dataset;
+}
+
+void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
+  const hid_t dataset = check_id(H5Dopen2(file, name, H5P_DEFAULT), name);
+  hid_t space = H5Dget_space(dataset);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  H5Sclose(space);
+  dims[0] = frame + 1;
+  check(H5Dset_extent(dataset, dims.data()), name);
+  space = H5Dget_space(dataset);
+  std::vector<hsize_t> start(dims.size(), 0), count = dims;
+  start[0] = frame;
+  count[0] = 1;
+  H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
+  const hid_t memory = H5Screate_simple(rank, count.data(), nullptr);
+  check(H5Dwrite(dataset, type, memory, space, H5P_DEFAULT, data), name);
+  H5Sclose(memory);
+  H5Sclose(space);
+  H5Dclose(dataset);
+}
+
+void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame) {
+  const hid_t dataset = check_id(H5Dopen2(file, name, H5P_DEFAULT), name);
+  const hid_t space = H5Dget_space(dataset);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  std::vector<hsize_t> start(dims.size(), 0), count = dims;
+  start[0] = frame;
+  count[0] = 1;
+  H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
+  const hid_t memory = H5Screate_simple(rank, count.data(), nullptr);
+  check(H5Dread(dataset, type, memory, space, H5P_DEFAULT, data), name);
+  H5Sclose(memory);
+  H5Sclose(space);
+  H5Dclose(dataset);
+}
+
+std::vector<double> interleave(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> out(2 * a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out[2 * i] = a[i];
+    out[2 * i + 1] = b[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+struct SnapshotWriter::Handles {
+  hid_t file = -1;
+};
+
+SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& m)
+    : handles_(std::make_unique<Handles>()), path_(path), particles_(m.system.particles), tc_(m.system.tc_duration > 0.0) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through exceptions
+  const std::string partial = path + ".partial";
+  handles_->file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  const hid_t f = handles_->file;
+  write_string_attribute(f, "format", kFormat);
+  write_attribute(f, "format_version", H5T_NATIVE_INT, &kFormatVersion);
+  write_string_attribute(f, "granule_version", m.version);
+  write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
+  write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
+  const double box[2] = {m.system.length_x, m.system.length_y};
+  write_attribute(f, "box", H5T_NATIVE_DOUBLE, box, 2);
+  write_attribute(f, "area_fraction", H5T_NATIVE_DOUBLE, &m.area_fraction);
+  write_attribute(f, "restitution", H5T_NATIVE_DOUBLE, &m.system.restitution);
+  write_attribute(f, "tc_duration", H5T_NATIVE_DOUBLE, &m.system.tc_duration);
+  write_string_attribute(f, "boundary", m.boundary);
+  write_attribute(f, "shear_velocity", H5T_NATIVE_DOUBLE, &m.system.shear_velocity);
+  write_attribute(f, "seed", H5T_NATIVE_UINT64, &m.seed);
+  const auto n = static_cast<hsize_t>(m.system.particles);
+  for (const char* name : {"positions", "velocities"}) H5Dclose(create_frames(f, name, H5T_IEEE_F64LE, {n, 2}));
+  for (const char* name : {"time", "collisions_per_particle", "shear_offset", "strain", "strain_reference"}) {
+    H5Dclose(create_frames(f, name, H5T_IEEE_F64LE, {}));
+  }
+  for (const char* name : {"collisions", "events"}) H5Dclose(create_frames(f, name, H5T_STD_I64LE, {}));
+  if (tc_) H5Dclose(create_frames(f, "last_collision", H5T_IEEE_F64LE, {n}));
+  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + partial);
+}
+
+SnapshotWriter::~SnapshotWriter() {
+  if (handles_ && handles_->file >= 0) H5Fclose(handles_->file);
+}
+
+void SnapshotWriter::append(const SnapshotFrame& frame) {
+  const hid_t f = handles_->file;
+  const auto k = static_cast<hsize_t>(frames_);
+  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles.x, frame.particles.y).data(), k);
+  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles.vx, frame.particles.vy).data(), k);
+  append_frame(f, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
+  append_frame(f, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
+  append_frame(f, "shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset, k);
+  append_frame(f, "strain", H5T_NATIVE_DOUBLE, &frame.strain, k);
+  append_frame(f, "strain_reference", H5T_NATIVE_DOUBLE, &frame.clock.strain_reference, k);
+  append_frame(f, "collisions", H5T_NATIVE_INT64, &frame.clock.collisions, k);
+  append_frame(f, "events", H5T_NATIVE_INT64, &frame.clock.events, k);
+  if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
+  ++frames_;
+  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path_ + ".partial");
+}
+
+void SnapshotWriter::finish() {
+  if (handles_->file >= 0) {
+    check(H5Fclose(handles_->file), "closing " + path_);
+    handles_->file = -1;
+  }
+  std::filesystem::rename(path_ + ".partial", path_);
+}
+
+SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = check_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "opening " + path);
+  SnapshotRead out;
+  try {
+    if (read_string_attribute(f, "format") != kFormat) throw std::runtime_error(path + " is not a Granule snapshot file");
+    SnapshotMetadata& m = out.metadata;
+    m.version = read_string_attribute(f, "granule_version");
+    m.boundary = read_string_attribute(f, "boundary");
+    m.system.particles = read_attribute<std::int64_t>(f, "particles", H5T_NATIVE_INT64);
+    m.system.diameter = read_attribute<double>(f, "diameter", H5T_NATIVE_DOUBLE);
+    double box[2] = {0.0, 0.0};
+    const hid_t attribute = H5Aopen(f, "box", H5P_DEFAULT);
+    check(H5Aread(attribute, H5T_NATIVE_DOUBLE, box), "reading box");
+    H5Aclose(attribute);
+    m.system.length_x = box[0];
+    m.system.length_y = box[1];
+    m.area_fraction = read_attribute<double>(f, "area_fraction", H5T_NATIVE_DOUBLE);
+    m.system.restitution = read_attribute<double>(f, "restitution", H5T_NATIVE_DOUBLE);
+    m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
+    m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
+    m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
+
+    const hid_t dataset = check_id(H5Dopen2(f, "time", H5P_DEFAULT), "opening time");
+    const hid_t space = H5Dget_space(dataset);
+    hsize_t frames = 0;
+    H5Sget_simple_extent_dims(space, &frames, nullptr);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    out.frames = static_cast<std::int64_t>(frames);
+    const std::int64_t k = index < 0 ? out.frames + index : index;
+    if (k < 0 || k >= out.frames) throw std::runtime_error(path + " has no frame " + std::to_string(index));
+    const auto frame = static_cast<hsize_t>(k);
+
+    const auto n = static_cast<std::size_t>(m.system.particles);
+    SnapshotFrame& s = out.frame;
+    std::vector<double> buffer(2 * n);
+    s.particles.resize(n);
+    read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.particles.x[i] = buffer[2 * i];
+      s.particles.y[i] = buffer[2 * i + 1];
+    }
+    read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.particles.vx[i] = buffer[2 * i];
+      s.particles.vy[i] = buffer[2 * i + 1];
+    }
+    read_frame(f, "time", H5T_NATIVE_DOUBLE, &s.clock.time, frame);
+    read_frame(f, "collisions_per_particle", H5T_NATIVE_DOUBLE, &s.collisions_per_particle, frame);
+    read_frame(f, "shear_offset", H5T_NATIVE_DOUBLE, &s.shear_offset, frame);
+    read_frame(f, "strain", H5T_NATIVE_DOUBLE, &s.strain, frame);
+    read_frame(f, "strain_reference", H5T_NATIVE_DOUBLE, &s.clock.strain_reference, frame);
+    read_frame(f, "collisions", H5T_NATIVE_INT64, &s.clock.collisions, frame);
+    read_frame(f, "events", H5T_NATIVE_INT64, &s.clock.events, frame);
+    if (m.system.tc_duration > 0.0) {
+      s.clock.last_collision.resize(n);
+      read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);
+    }
+  } catch (...) {
+    H5Fclose(f);
+    throw;
+  }
+  H5Fclose(f);
+  return out;
+}
+
+}  // namespace granule

@@ -1,0 +1,99 @@
+#include "observers/global_diagnostics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace granule {
+
+GlobalDiagnostics::GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y)
+    : params_(params),
+      frame_{params.length_x, params.length_y, params.shear_velocity},
+      cells_x_(cells_x),
+      cells_y_(cells_y) {}
+
+void GlobalDiagnostics::on_collision(const CollisionRecord& record) {
+  impulse_sum_ += record.impulse;
+  impulse_xy_sum_ += record.impulse * record.contact_normal.x * record.contact_normal.y;
+}
+
+void GlobalDiagnostics::restart_interval(double t, std::int64_t collisions) {
+  impulse_sum_ = 0.0;
+  impulse_xy_sum_ = 0.0;
+  interval_start_ = t;
+  interval_collisions_ = collisions;
+}
+
+DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions) {
+  const std::size_t n = state.size();
+  const double nd = static_cast<double>(n);
+  const double area = params_.length_x * params_.length_y;
+  DiagnosticsSample out;
+  out.t = t;
+  out.c = static_cast<double>(collisions) / nd;
+
+  // Cell sums for V(r) and T(r) (thesis §1.4.3, eq 1.3 with identity 1.5).
+  const std::size_t cells = static_cast<std::size_t>(cells_x_) * static_cast<std::size_t>(cells_y_);
+  std::vector<double> count(cells), sx(cells), sy(cells), sxx(cells);
+  std::vector<std::size_t> cell_of(n);
+  double kinetic = 0.0, fluct = 0.0, fluct_xy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int cx = std::min(cells_x_ - 1, static_cast<int>(state.x[i] / params_.length_x * cells_x_));
+    const int cy = std::min(cells_y_ - 1, static_cast<int>(state.y[i] / params_.length_y * cells_y_));
+    const std::size_t c = static_cast<std::size_t>(cx) + static_cast<std::size_t>(cy) * static_cast<std::size_t>(cells_x_);
+    cell_of[i] = c;
+    const double vx = state.vx[i], vy = state.vy[i];
+    count[c] += 1.0;
+    sx[c] += vx;
+    sy[c] += vy;
+    sxx[c] += vx * vx + vy * vy;
+    kinetic += vx * vx + vy * vy;
+    const double ux = vx - frame_.mean_flow(state.y[i]);
+    fluct += ux * ux + vy * vy;
+    fluct_xy += ux * vy;
+  }
+  out.kinetic_energy = 0.5 * kinetic / nd;
+  out.temperature_global = 0.5 * fluct / nd;
+  out.pressure_kinetic = 0.5 * fluct / area;
+  out.shear_stress_kinetic = fluct_xy / area;
+
+  double temperature_sum = 0.0;
+  int occupied = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (count[c] == 0.0) continue;
+    const double mx = sx[c] / count[c], my = sy[c] / count[c];
+    temperature_sum += 0.5 * (sxx[c] / count[c] - mx * mx - my * my);
+    ++occupied;
+  }
+  out.temperature = occupied > 0 ? temperature_sum / occupied : 0.0;
+
+  // Moments of the fluctuating velocity relative to the cell velocity (κ, eq 1.8; §2.1).
+  double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = cell_of[i];
+    const double ux = state.vx[i] - sx[c] / count[c];
+    const double uy = state.vy[i] - sy[c] / count[c];
+    const double u2 = ux * ux + uy * uy;
+    m2 += u2;
+    m4 += u2 * u2;
+    m3x += ux * ux * ux;
+    m3y += uy * uy * uy;
+  }
+  m2 /= nd;
+  m4 /= nd;
+  out.flatness = m2 > 0.0 ? m4 / (m2 * m2) : 0.0;
+  const double scale = m2 > 0.0 ? std::pow(m2, 1.5) : 1.0;
+  out.asymmetry_x = m3x / nd / scale;
+  out.asymmetry_y = m3y / nd / scale;
+
+  const double dt = t - interval_start_;
+  if (dt > 0.0) {
+    out.pressure_collisional = params_.diameter * impulse_sum_ / (2.0 * area * dt);
+    out.shear_stress_collisional = params_.diameter * impulse_xy_sum_ / (area * dt);
+    out.collision_rate = static_cast<double>(collisions - interval_collisions_) / nd / dt;
+  }
+  restart_interval(t, collisions);
+  return out;
+}
+
+}  // namespace granule

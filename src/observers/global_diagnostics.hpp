@@ -1,0 +1,55 @@
+// The global time series of a run (thesis §1.4.3, §2.1, Figs 2.5–2.7, 3.6): kinetic energy,
+// the granular temperature T̄ (mean of cell temperatures, eq 1.3), the global fluctuation
+// temperature, flatness κ (1.8), two asymmetry measures, kinetic and collisional pressures
+// (half traces of 1.4 and 1.6) and the collision rate.  Collisional quantities are accumulated
+// from every collision record over the sampling interval.
+#pragma once
+
+#include <cstdint>
+
+#include "boundary/shear_frame.hpp"
+#include "engine/observer.hpp"
+#include "engine/system_params.hpp"
+
+namespace granule {
+
+struct DiagnosticsSample {
+  double t = 0.0;
+  double c = 0.0;                     // collisions per particle, thesis convention (total / N)
+  double kinetic_energy = 0.0;        // ½⟨v²⟩ per particle, lab frame
+  double temperature = 0.0;           // T̄: mean over occupied cells of T(r) (eq 1.3)
+  double temperature_global = 0.0;    // ½⟨v'²⟩ with v' = v − u(y) (u = 0 for periodic boxes)
+  double flatness = 0.0;              // κ = ⟨v'⁴⟩ / ⟨v'²⟩², v' relative to the cell velocity
+  double asymmetry_x = 0.0;           // ⟨v'_x³⟩ / ⟨v'²⟩^{3/2}
+  double asymmetry_y = 0.0;           // ⟨v'_y³⟩ / ⟨v'²⟩^{3/2}
+  double pressure_kinetic = 0.0;      // n T_global: half trace of (1.4) over the whole box
+  double pressure_collisional = 0.0;  // σ/(2 A Δt) Σ J over the interval: half trace of (1.6)
+  double shear_stress_collisional = 0.0;  // xy component of (1.6) over the interval
+  double shear_stress_kinetic = 0.0;      // xy component of (1.4), whole box
+  double collision_rate = 0.0;        // Δc / Δt over the interval
+};
+
+class GlobalDiagnostics final : public EventObserver {
+ public:
+  // cells_x × cells_y is the coarse-graining grid of T̄ and κ (independent of the engine's cells).
+  GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y);
+
+  void on_collision(const CollisionRecord& record) override;
+  // Measure the configuration `state` at time t (collisions since production started) and
+  // close the current interval.
+  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions);
+  // Forget the open interval's collisions (e.g. after the elastic pre-run).
+  void restart_interval(double t, std::int64_t collisions);
+
+ private:
+  SystemParams params_;
+  ShearFrame frame_;
+  int cells_x_;
+  int cells_y_;
+  double impulse_sum_ = 0.0;     // Σ J over the interval
+  double impulse_xy_sum_ = 0.0;  // Σ J k_x k_y
+  double interval_start_ = 0.0;
+  std::int64_t interval_collisions_ = 0;
+};
+
+}  // namespace granule
