@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Install Granule's build dependencies from Debian 12 packages (as root) and build the release
+# preset.  Safe to run repeatedly.  Usage: bash scripts/setup.sh [preset]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+packages=(cmake ninja-build g++ libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
+          libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libhdf5-dev hdf5-tools libeigen3-dev
+          python3-h5py python3-numpy)
+missing=()
+for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+if ((${#missing[@]})); then
+  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get -o DPkg::Lock::Timeout=600 install -y -qq "${missing[@]}" >/dev/null
+fi
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset"
