@@ -249,7 +249,7 @@ void add_run_command(CLI::App& root) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* command = root.add_subcommand(
       "run", "Run a simulation from a TOML config (or the built-in example: free cooling of a scaled-down "
-             "System II of Tan 1995, N = 20000, ν = 0.05, e = 0.6).");
+             "System II of Tan 1995, N = 40000, ν = 0.05, e = 0.6).");
   command->add_option("config", options->config_path, "TOML configuration file (keys: see README.md)")
       ->check(CLI::ExistingFile);
   command->add_option("--set", options->overrides, "Override a config key, e.g. --set system.restitution=0.8 (repeatable)");

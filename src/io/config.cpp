@@ -316,7 +316,7 @@ std::string default_example_toml() {
 seed = 1995
 
 [system]
-particles = 20000
+particles = 40000
 area_fraction = 0.05
 box = [1.0, 1.0]
 restitution = 0.6
