@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -75,6 +76,9 @@ TEST_P(ElasticEquilibrium, PressureCollisionRateAndFlatness) {
   const double span = sim.time() - t_start;
   const double density = static_cast<double>(p.particles);  // box area 1
   const double z = (pk_sum / kSamples + pc_weighted / span) / (density * temperature);
+  std::printf("nu=%.2f  Z=%.4f (Henderson %.4f)  rate=%.4f (Enskog %.4f)  kappa=%.4f\n", nu, z, henderson_z(nu),
+              static_cast<double>(sim.collisions() - start) / density / span,
+              density * p.diameter * henderson_contact(nu) * std::sqrt(M_PI * temperature), flatness_sum / kSamples);
   EXPECT_NEAR(z / henderson_z(nu), 1.0, 0.025) << "Z = " << z << " Henderson " << henderson_z(nu);
   const double rate = static_cast<double>(sim.collisions() - start) / density / span;
   const double enskog = density * p.diameter * henderson_contact(nu) * std::sqrt(M_PI * temperature);
@@ -174,6 +178,7 @@ TEST(FreeCooling, LogTemperatureSlopePerCollision) {
     sxy += (c[k] - mc) * (log_t[k] - ml);
     sxx += (c[k] - mc) * (c[k] - mc);
   }
+  std::printf("free cooling e=%.2f: d ln T/dc = %.4f (theory %.4f)\n", e, sxy / sxx, -(1.0 - e * e));
   EXPECT_NEAR(sxy / sxx / -(1.0 - e * e), 1.0, 0.03) << "slope " << sxy / sxx;
 }
 
@@ -213,6 +218,7 @@ TEST(LeesEdwards, LinearProfileAndSteadyTemperature) {
     syv += y * v;
   }
   const double slope = (kBins * syv - sy * sv) / (kBins * syy - sy * sy);
+  std::printf("Lees-Edwards: dVx/dy = %.4f (gamma %.4f), T-bar = %.4f ((3.1): 1)\n", slope, p.shear_velocity, temperature);
   EXPECT_NEAR(slope / p.shear_velocity, 1.0, 0.05);
   EXPECT_NEAR(temperature, 1.0, 0.3) << "T̄ measured " << temperature << ", (3.1) predicts 1";
 }
