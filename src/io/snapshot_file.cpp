@@ -76,42 +76,50 @@ hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_
   return dataset;
 }
 
-void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
+// Write (grow = true, extending the dataset by one frame) or read one frame of a dataset.
+void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow) {
   const hid_t dataset = check_id(H5Dopen2(file, name, H5P_DEFAULT), name);
   hid_t space = H5Dget_space(dataset);
   const int rank = H5Sget_simple_extent_ndims(space);
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
   H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  H5Sclose(space);
-  dims[0] = frame + 1;
-  check(H5Dset_extent(dataset, dims.data()), name);
-  space = H5Dget_space(dataset);
+  if (grow) {
+    H5Sclose(space);
+    dims[0] = frame + 1;
+    check(H5Dset_extent(dataset, dims.data()), name);
+    space = H5Dget_space(dataset);
+  }
   std::vector<hsize_t> start(dims.size(), 0), count = dims;
   start[0] = frame;
   count[0] = 1;
   H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
   const hid_t memory = H5Screate_simple(rank, count.data(), nullptr);
-  check(H5Dwrite(dataset, type, memory, space, H5P_DEFAULT, data), name);
+  const herr_t status = grow ? H5Dwrite(dataset, type, memory, space, H5P_DEFAULT, data)
+                             : H5Dread(dataset, type, memory, space, H5P_DEFAULT, data);
   H5Sclose(memory);
   H5Sclose(space);
   H5Dclose(dataset);
+  check(status, name);
+}
+
+void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
+  transfer_frame(file, name, type, const_cast<void*>(data), frame, true);
 }
 
 void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame) {
-  const hid_t dataset = check_id(H5Dopen2(file, name, H5P_DEFAULT), name);
-  const hid_t space = H5Dget_space(dataset);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  std::vector<hsize_t> start(dims.size(), 0), count = dims;
-  start[0] = frame;
-  count[0] = 1;
-  H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
-  const hid_t memory = H5Screate_simple(rank, count.data(), nullptr);
-  check(H5Dread(dataset, type, memory, space, H5P_DEFAULT, data), name);
-  H5Sclose(memory);
-  H5Sclose(space);
-  H5Dclose(dataset);
+  transfer_frame(file, name, type, data, frame, false);
+}
+
+// The per-frame scalars of the schema, in one list for writing and reading.
+template <typename Frame, typename Visit>
+void for_each_scalar(Frame& frame, Visit&& visit) {
+  visit("time", H5T_NATIVE_DOUBLE, &frame.clock.time);
+  visit("collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle);
+  visit("shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset);
+  visit("strain", H5T_NATIVE_DOUBLE, &frame.strain);
+  visit("strain_reference", H5T_NATIVE_DOUBLE, &frame.clock.strain_reference);
+  visit("collisions", H5T_NATIVE_INT64, &frame.clock.collisions);
+  visit("events", H5T_NATIVE_INT64, &frame.clock.events);
 }
 
 std::vector<double> interleave(const std::vector<double>& a, const std::vector<double>& b) {
@@ -167,13 +175,7 @@ void SnapshotWriter::append(const SnapshotFrame& frame) {
   const auto k = static_cast<hsize_t>(frames_);
   append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles.x, frame.particles.y).data(), k);
   append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles.vx, frame.particles.vy).data(), k);
-  append_frame(f, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
-  append_frame(f, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
-  append_frame(f, "shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset, k);
-  append_frame(f, "strain", H5T_NATIVE_DOUBLE, &frame.strain, k);
-  append_frame(f, "strain_reference", H5T_NATIVE_DOUBLE, &frame.clock.strain_reference, k);
-  append_frame(f, "collisions", H5T_NATIVE_INT64, &frame.clock.collisions, k);
-  append_frame(f, "events", H5T_NATIVE_INT64, &frame.clock.events, k);
+  for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
   ++frames_;
   check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path_ + ".partial");
@@ -235,13 +237,7 @@ SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
       s.particles.vx[i] = buffer[2 * i];
       s.particles.vy[i] = buffer[2 * i + 1];
     }
-    read_frame(f, "time", H5T_NATIVE_DOUBLE, &s.clock.time, frame);
-    read_frame(f, "collisions_per_particle", H5T_NATIVE_DOUBLE, &s.collisions_per_particle, frame);
-    read_frame(f, "shear_offset", H5T_NATIVE_DOUBLE, &s.shear_offset, frame);
-    read_frame(f, "strain", H5T_NATIVE_DOUBLE, &s.strain, frame);
-    read_frame(f, "strain_reference", H5T_NATIVE_DOUBLE, &s.clock.strain_reference, frame);
-    read_frame(f, "collisions", H5T_NATIVE_INT64, &s.clock.collisions, frame);
-    read_frame(f, "events", H5T_NATIVE_INT64, &s.clock.events, frame);
+    for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
     if (m.system.tc_duration > 0.0) {
       s.clock.last_collision.resize(n);
       read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);
