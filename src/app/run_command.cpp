@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -35,6 +36,7 @@ struct RunOptions {
   std::string config_path;
   std::vector<std::string> overrides;
   std::string out_dir;
+  std::string resume_dir;
 };
 
 // A recurring output trigger, in collisions per particle or in time.
@@ -116,7 +118,10 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, cons
 
 int run(const RunOptions& options) {
   // 1. Everything that can be wrong with the input is found before anything is written.
-  const ConfigResult parsed = options.config_path.empty()
+  const bool resume = !options.resume_dir.empty();
+  const std::string out = resume ? options.resume_dir : options.out_dir;
+  const ConfigResult parsed = resume ? load_config_file(out + "/config.toml", options.overrides)
+                              : options.config_path.empty()
                                   ? parse_config(default_example_toml(), options.overrides)
                                   : load_config_file(options.config_path, options.overrides);
   if (!parsed.config) {
@@ -131,51 +136,88 @@ int run(const RunOptions& options) {
     fmt::print(stderr, "granule run: error: {}\n", choice.error);
     return kExitBadInput;
   }
-  const InitialStateResult initial = make_initial_state(system, config.initial_temperature, config.seed, config.placement);
-  if (!initial.error.empty()) {
-    fmt::print(stderr, "granule run: error: {} (system.area_fraction = {:.4g})\n", initial.error, config.area_fraction);
-    return kExitBadInput;
+  std::unique_ptr<Simulation> simulation;
+  std::int64_t equilibrate_collisions = 0;
+  std::string previous_rows;  // time-series rows of the run being resumed
+  if (resume) {
+    // Continue from the last snapshot: the engine restarts bit for bit from a synchronised frame.
+    SnapshotRead last;
+    try {
+      last = read_snapshot(out + "/snapshots.h5");
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "granule run: error: cannot resume from {}: {}\n", out, error.what());
+      return kExitBadInput;
+    }
+    if (last.metadata.system.particles != system.particles || last.metadata.system.diameter != system.diameter) {
+      fmt::print(stderr, "granule run: error: {}/snapshots.h5 does not match {}/config.toml (--set may only change "
+                         "run and output keys when resuming)\n", out, out);
+      return kExitBadInput;
+    }
+    simulation = std::make_unique<Simulation>(system, *choice.grid, last.frame.particles, last.frame.clock);
+    std::ifstream csv(out + "/timeseries.csv");
+    std::string line;
+    std::getline(csv, line);  // header
+    while (std::getline(csv, line)) {
+      if (std::stod(line.substr(line.find(',') + 1)) <= simulation->collisions_per_particle() + 1e-12) {
+        previous_rows += line + "\n";
+      }
+    }
+    fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, simulation->time(), simulation->collisions_per_particle());
+  } else {
+    const InitialStateResult initial = make_initial_state(system, config.initial_temperature, config.seed, config.placement);
+    if (!initial.error.empty()) {
+      fmt::print(stderr, "granule run: error: {} (system.area_fraction = {:.4g})\n", initial.error, config.area_fraction);
+      return kExitBadInput;
+    }
+    std::filesystem::create_directories(out);
+    // 2. The elastic pre-run of thesis §1.4.2, then the restitution is switched on at t = c = 0.
+    SystemParams elastic = system;
+    elastic.restitution = 1.0;
+    simulation = std::make_unique<Simulation>(elastic, *choice.grid, initial.state);
+    equilibrate_collisions = std::llround(config.equilibrate * static_cast<double>(system.particles));
   }
-  const std::string out = options.out_dir;
-  std::filesystem::create_directories(out);
+  Simulation& sim = *simulation;
   write_file_atomically(out + "/config.toml", to_toml(config));
   fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, system.particles,
              config.area_fraction, system.diameter, system.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic",
              system.length_x, system.length_y,
              config.lees_edwards ? fmt::format(", U = {}", system.shear_velocity) : std::string{});
-
-  // 2. The elastic pre-run of thesis §1.4.2, then the restitution is switched on at t = c = 0.
-  SystemParams elastic = system;
-  elastic.restitution = 1.0;
-  Simulation sim(elastic, *choice.grid, initial.state);
   Progress progress;
-  const auto equilibrate_collisions = std::llround(config.equilibrate * static_cast<double>(system.particles));
   if (equilibrate_collisions > 0) {
     fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
     if (sim.run(kInf, equilibrate_collisions) == StopReason::kNoEvents) {
       fmt::print(stderr, "granule run: the elastic pre-run has no events (all disks at rest?)\n");
     }
   }
-  sim.start_production(system.restitution);
-  sim.synchronize();
+  if (!resume) {
+    sim.start_production(system.restitution);
+    sim.synchronize();
+  }
 
   GlobalDiagnostics diagnostics(system, config.diagnostic_cells.first, config.diagnostic_cells.second);
   sim.add_observer(&diagnostics);
-  std::vector<DiagnosticsSample> samples{diagnostics.sample(sim.state(), sim.time(), sim.collisions())};
-  SnapshotWriter snapshots(out + "/snapshots.h5", {system, config.area_fraction,
-                                                   config.lees_edwards ? "lees-edwards" : "periodic", config.seed, kVersion});
-  std::int64_t last_snapshot_events = -1;
+  std::vector<DiagnosticsSample> samples;
+  diagnostics.restart_interval(sim.time(), sim.collisions());
+  if (!resume) samples.push_back(diagnostics.sample(sim.state(), sim.time(), sim.collisions()));
+  auto snapshots = resume ? std::make_unique<SnapshotWriter>(out + "/snapshots.h5")
+                          : std::make_unique<SnapshotWriter>(out + "/snapshots.h5",
+                                                             SnapshotMetadata{system, config.area_fraction,
+                                                                              config.lees_edwards ? "lees-edwards" : "periodic",
+                                                                              config.seed, kVersion});
+  std::int64_t last_snapshot_events = resume ? sim.events() : -1;
   auto write_snapshot = [&] {
     sim.synchronize();
     last_snapshot_events = sim.events();
-    snapshots.append({sim.state(), sim.clock_state(), sim.collisions_per_particle(), sim.shear_offset(), sim.strain()});
+    snapshots->append({sim.state(), sim.clock_state(), sim.collisions_per_particle(), sim.shear_offset(), sim.strain()});
   };
-  write_snapshot();
+  if (!resume) write_snapshot();
 
   Schedule sampling{config.sample_every_collisions_per_particle, config.sample_every_time};
   Schedule snapshotting{config.snapshot_every_collisions_per_particle, config.snapshot_every_time};
   sampling.start(system.particles);
   snapshotting.start(system.particles);
+  sampling.advance(sim);  // a resumed run has passed some outputs already
+  snapshotting.advance(sim);
   const std::int64_t until_collisions = config.until_collisions_per_particle
                                             ? std::llround(*config.until_collisions_per_particle * static_cast<double>(system.particles))
                                             : kNoLimit;
@@ -201,7 +243,7 @@ int run(const RunOptions& options) {
       sampling.advance(sim);
       const double now = progress.seconds_since_start();
       if (now - last_csv_write > 10.0) {  // keep the file current on long runs
-        write_timeseries(out + "/timeseries.csv", samples);
+        write_timeseries(out + "/timeseries.csv", samples, previous_rows);
         last_csv_write = now;
       }
     }
@@ -217,16 +259,16 @@ int run(const RunOptions& options) {
 
   // 4. Final state, time series and summary.
   if (last_snapshot_events != sim.events()) write_snapshot();
-  snapshots.finish();
-  write_timeseries(out + "/timeseries.csv", samples);
+  snapshots->finish();
+  write_timeseries(out + "/timeseries.csv", samples, previous_rows);
   const nlohmann::json summary = summary_json(config, sim, *choice.grid, wall_seconds, reason, equilibrate_collisions,
-                                              snapshots.frames(), samples);
+                                              snapshots->frames(), samples);
   write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
 
   fmt::print("finished ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n", stop_text(reason),
              sim.time(), sim.collisions_per_particle(), sim.collisions(), wall_seconds,
              summary["collisions_per_second"].get<double>());
-  fmt::print("outputs in {}: config.toml, timeseries.csv, summary.json, snapshots.h5 ({} frames)\n", out, snapshots.frames());
+  fmt::print("outputs in {}: config.toml, timeseries.csv, summary.json, snapshots.h5 ({} frames)\n", out, snapshots->frames());
   if (reason == StopReason::kInelasticCollapse) {
     const CollapseReport& c = sim.collapse();
     fmt::print(stderr,
@@ -254,6 +296,10 @@ void add_run_command(CLI::App& root) {
       ->check(CLI::ExistingFile);
   command->add_option("--set", options->overrides, "Override a config key, e.g. --set system.restitution=0.8 (repeatable)");
   command->add_option("--out", options->out_dir, "Output directory")->default_val("granule-run");
+  command->add_option("--resume", options->resume_dir,
+                      "Continue the run in this output directory from its last snapshot (extend it with e.g. "
+                      "--set run.until_collisions_per_particle=200)")
+      ->check(CLI::ExistingDirectory);
   command->callback([options] { throw CLI::RuntimeError(run(*options)); });
 }
 

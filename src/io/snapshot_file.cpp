@@ -166,6 +166,16 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
   check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + partial);
 }
 
+SnapshotWriter::SnapshotWriter(const std::string& path) : handles_(std::make_unique<Handles>()), path_(path) {
+  const SnapshotRead last = read_snapshot(path);
+  particles_ = last.metadata.system.particles;
+  tc_ = last.metadata.system.tc_duration > 0.0;
+  frames_ = last.frames;
+  const std::string partial = path + ".partial";
+  std::filesystem::copy_file(path, partial, std::filesystem::copy_options::overwrite_existing);
+  handles_->file = check_id(H5Fopen(partial.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "opening " + partial);
+}
+
 SnapshotWriter::~SnapshotWriter() {
   if (handles_ && handles_->file >= 0) H5Fclose(handles_->file);
 }

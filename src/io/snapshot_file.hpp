@@ -31,6 +31,9 @@ class SnapshotWriter {
  public:
   // Starts `path`.partial (replacing any earlier partial file).  Throws std::runtime_error.
   SnapshotWriter(const std::string& path, const SnapshotMetadata& metadata);
+  // Continue an existing finished file (restart): frames are appended to a copy at
+  // `path`.partial, renamed over `path` by finish().
+  explicit SnapshotWriter(const std::string& path);
   ~SnapshotWriter();
   SnapshotWriter(const SnapshotWriter&) = delete;
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;

@@ -19,8 +19,9 @@ std::string timeseries_row(const DiagnosticsSample& s) {
                      s.shear_stress_kinetic, s.shear_stress_collisional, s.collision_rate);
 }
 
-void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples) {
-  std::string content = timeseries_header();
+void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples,
+                      const std::string& previous_rows) {
+  std::string content = timeseries_header() + previous_rows;
   for (const auto& sample : samples) content += timeseries_row(sample);
   write_file_atomically(path, content);
 }

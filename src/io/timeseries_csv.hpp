@@ -10,7 +10,8 @@ namespace granule {
 
 std::string timeseries_header();
 std::string timeseries_row(const DiagnosticsSample& sample);
-// Rewrite the whole file atomically.
-void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples);
+// Rewrite the whole file atomically; `previous_rows` (CSV lines of a resumed run) come first.
+void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples,
+                      const std::string& previous_rows = {});
 
 }  // namespace granule
