@@ -158,10 +158,11 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
   write_attribute(f, "seed", H5T_NATIVE_UINT64, &m.seed);
   const auto n = static_cast<hsize_t>(m.system.particles);
   for (const char* name : {"positions", "velocities"}) H5Dclose(create_frames(f, name, H5T_IEEE_F64LE, {n, 2}));
-  for (const char* name : {"time", "collisions_per_particle", "shear_offset", "strain", "strain_reference"}) {
-    H5Dclose(create_frames(f, name, H5T_IEEE_F64LE, {}));
-  }
-  for (const char* name : {"collisions", "events"}) H5Dclose(create_frames(f, name, H5T_STD_I64LE, {}));
+  const SnapshotFrame layout;
+  for_each_scalar(layout, [&](const char* name, hid_t memory_type, const void*) {
+    const hid_t file_type = H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE;
+    H5Dclose(create_frames(f, name, file_type, {}));
+  });
   if (tc_) H5Dclose(create_frames(f, "last_collision", H5T_IEEE_F64LE, {n}));
   check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + partial);
 }
