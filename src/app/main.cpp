@@ -1,6 +1,7 @@
 // granule: command-line entry point.  Each subcommand lives in its own file under src/app/.
 #include <CLI/CLI.hpp>
 
+#include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
 #include "app/run_command.hpp"
 #include "app/theory_command.hpp"
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
   granule::app::add_run_command(app);
   granule::app::add_bench_command(app);
   granule::app::add_theory_command(app);
+  granule::app::add_analyze_command(app);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

@@ -1,0 +1,51 @@
+// Coarse-grained fields of thesis §1.4.3 from particle configurations: number density ρ(r),
+// velocity V(r) (momentum over mass), temperature T(r) (1.3), kinetic stress τ^(k) (1.4) via the
+// identity (1.5), kinetic pressure (half trace) and vorticity.  Unit mass: ρ is both the number
+// and the mass density (particles per unit area).
+//
+// Fields come from cell moments (count, Σv, Σvv).  Moments add up, so the same code gives the
+// instantaneous fields of one configuration and the interval-averaged fields of many (sums over
+// K configurations, ρ divided by K): V and T are then mass-weighted averages, as the ensemble
+// averages of §5.2.
+#pragma once
+
+#include <vector>
+
+#include "analysis/field_grid.hpp"
+#include "boundary/shear_frame.hpp"
+#include "engine/system_params.hpp"
+
+namespace granule {
+
+struct CellMoments {
+  FieldGrid grid;
+  int configurations = 0;  // how many configurations were added
+  std::vector<double> count, px, py, pxx, pxy, pyy;
+
+  explicit CellMoments(const FieldGrid& g);
+  // Add one configuration.  With `subtract_shear_profile`, each particle's velocity is taken
+  // relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of `frame` before it is summed.
+  void add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile);
+};
+
+struct CellFields {
+  FieldGrid grid;
+  std::vector<double> count;        // particles per cell (per configuration)
+  std::vector<double> density;      // ρ = count / cell area
+  std::vector<double> velocity_x;   // V(r); 0 in empty cells
+  std::vector<double> velocity_y;
+  std::vector<double> temperature;  // T(r) = ½⟨(v − V)²⟩ (1.3); 0 in empty cells
+  std::vector<double> kinetic_xx;   // τ^(k) = ρ⟨v'v'⟩ (1.4)
+  std::vector<double> kinetic_xy;
+  std::vector<double> kinetic_yy;
+  std::vector<double> pressure_kinetic;  // ½ Tr τ^(k) = ρ T
+  std::vector<double> vorticity;    // ω = ∂V_y/∂x − ∂V_x/∂y, central differences across cells
+};
+
+// `frame` and `shear_offset` (the Lees–Edwards image offset Δ) give the neighbours of the top and
+// bottom rows for the vorticity: the row above the top is the bottom row shifted by Δ, moving at
+// +U (unless the shear profile was subtracted).
+CellFields fields_from_moments(const CellMoments& moments, const ShearFrame& frame, double shear_offset,
+                               bool shear_profile_subtracted);
+
+}  // namespace granule

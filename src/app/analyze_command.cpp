@@ -1,0 +1,10 @@
+#include "app/analyze_command.hpp"
+
+namespace granule::app {
+
+void add_analyze_command(CLI::App& root) {
+  CLI::App* analyze = root.add_subcommand("analyze", "Measure from the saved outputs of a run (snapshots.h5)");
+  analyze->require_subcommand(1);
+}
+
+}  // namespace granule::app

@@ -1,0 +1,13 @@
+// `granule analyze ...`: measurements from the saved outputs of a run (snapshot files).  Each
+// analysis registers its own subcommand from its own file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace granule::app {
+
+void add_analyze_command(CLI::App& root);
+
+// One per analysis (src/app/analyze_*.cpp).
+
+}  // namespace granule::app
