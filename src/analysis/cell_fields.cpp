@@ -84,3 +84,28 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
 }
 
 }  // namespace granule
+
+namespace granule {
+
+StreamwiseProfiles streamwise_profiles(const CellFields& f) {
+  const FieldGrid& g = f.grid;
+  StreamwiseProfiles p;
+  for (int iy = 0; iy < g.ny; ++iy) {
+    double rho = 0.0, vx = 0.0, vy = 0.0, t = 0.0;
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const std::size_t c = static_cast<std::size_t>(ix) + static_cast<std::size_t>(iy) * static_cast<std::size_t>(g.nx);
+      rho += f.density[c];
+      vx += f.density[c] * f.velocity_x[c];
+      vy += f.density[c] * f.velocity_y[c];
+      t += f.density[c] * f.temperature[c];
+    }
+    p.y.push_back(g.center_y(iy));
+    p.density.push_back(rho / g.nx);
+    p.velocity_x.push_back(rho > 0.0 ? vx / rho : 0.0);
+    p.velocity_y.push_back(rho > 0.0 ? vy / rho : 0.0);
+    p.temperature.push_back(rho > 0.0 ? t / rho : 0.0);
+  }
+  return p;
+}
+
+}  // namespace granule

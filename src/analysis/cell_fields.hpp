@@ -49,3 +49,29 @@ CellFields fields_from_moments(const CellMoments& moments, const ShearFrame& fra
                                bool shear_profile_subtracted);
 
 }  // namespace granule
+
+namespace granule {
+
+// The named per-cell fields, in one list for writers and readers.
+template <typename Fields, typename Visit>
+void for_each_field(Fields& f, Visit&& visit) {
+  visit("count", f.count);
+  visit("density", f.density);
+  visit("velocity_x", f.velocity_x);
+  visit("velocity_y", f.velocity_y);
+  visit("temperature", f.temperature);
+  visit("kinetic_xx", f.kinetic_xx);
+  visit("kinetic_xy", f.kinetic_xy);
+  visit("kinetic_yy", f.kinetic_yy);
+  visit("pressure_kinetic", f.pressure_kinetic);
+  visit("vorticity", f.vorticity);
+}
+
+// Streamwise averages over each row of cells (Figs 3.15–3.16): ρ(y) the row mean of ρ, and the
+// mass-weighted row means V_x(y), V_y(y), T(y) = Σ ρ T / Σ ρ.
+struct StreamwiseProfiles {
+  std::vector<double> y, density, velocity_x, velocity_y, temperature;
+};
+StreamwiseProfiles streamwise_profiles(const CellFields& fields);
+
+}  // namespace granule

@@ -13,6 +13,8 @@
 #include <optional>
 
 #include "app/progress.hpp"
+#include "app/run_measurements.hpp"
+#include "app/schedule.hpp"
 #include "engine/simulation.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
@@ -26,8 +28,6 @@ namespace granule::app {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
 // Exit codes: 2 bad input (nothing written), 3 stopped by inelastic collapse (outputs written).
 constexpr int kExitBadInput = 2;
 constexpr int kExitCollapse = 3;
@@ -37,29 +37,6 @@ struct RunOptions {
   std::vector<std::string> overrides;
   std::string out_dir;
   std::string resume_dir;
-};
-
-// A recurring output trigger, in collisions per particle or in time.
-struct Schedule {
-  std::optional<double> every_c;
-  std::optional<double> every_t;
-  std::int64_t next_collisions = kNoLimit;
-  double next_time = kInf;
-  std::int64_t particles = 1;
-
-  void start(std::int64_t n) {
-    particles = n;
-    if (every_c && *every_c > 0.0) next_collisions = collisions_at(*every_c);
-    if (every_t) next_time = *every_t;
-  }
-  std::int64_t collisions_at(double c) const { return std::llround(c * static_cast<double>(particles)); }
-  bool due(const Simulation& sim) const { return sim.collisions() >= next_collisions || sim.time() >= next_time; }
-  void advance(const Simulation& sim) {
-    while (every_c && *every_c > 0.0 && sim.collisions() >= next_collisions) {
-      next_collisions = collisions_at(static_cast<double>(next_collisions) / static_cast<double>(particles) + *every_c);
-    }
-    while (every_t && sim.time() >= next_time) next_time += *every_t;
-  }
 };
 
 const char* stop_text(StopReason reason) {
@@ -212,6 +189,13 @@ int run(const RunOptions& options) {
   };
   if (!resume) write_snapshot();
 
+  // Fields and collision statistics; a resumed run measures its new segment in a folder of its own.
+  const std::string measurement_dir =
+      resume ? fmt::format("{}/resumed_from_c{:g}", out, sim.collisions_per_particle()) : out;
+  std::filesystem::create_directories(measurement_dir);
+  RunMeasurements measurements(config, measurement_dir);
+  measurements.start(sim);
+
   Schedule sampling{config.sample_every_collisions_per_particle, config.sample_every_time};
   Schedule snapshotting{config.snapshot_every_collisions_per_particle, config.snapshot_every_time};
   sampling.start(system.particles);
@@ -230,8 +214,8 @@ int run(const RunOptions& options) {
   StopReason reason = StopReason::kCollisionsReached;
   while (true) {
     const std::int64_t target = std::min({until_collisions, sampling.next_collisions, snapshotting.next_collisions,
-                                          sim.collisions() + chunk});
-    reason = sim.run(std::min({until_time, sampling.next_time, snapshotting.next_time}), target);
+                                          measurements.next_collisions(), sim.collisions() + chunk});
+    reason = sim.run(std::min({until_time, sampling.next_time, snapshotting.next_time, measurements.next_time()}), target);
     const bool finished = reason == StopReason::kInelasticCollapse || reason == StopReason::kNoEvents ||
                           sim.collisions() >= until_collisions || sim.time() >= until_time;
     if (snapshotting.due(sim)) {
@@ -239,7 +223,9 @@ int run(const RunOptions& options) {
       snapshotting.advance(sim);
     }
     if (sampling.due(sim) || finished) {
-      samples.push_back(diagnostics.sample(sim.state(), sim.time(), sim.collisions()));
+      const ParticleState state = sim.state();
+      samples.push_back(diagnostics.sample(state, sim.time(), sim.collisions()));
+      measurements.on_sample(state, sim.collisions());
       sampling.advance(sim);
       const double now = progress.seconds_since_start();
       if (now - last_csv_write > 10.0) {  // keep the file current on long runs
@@ -247,6 +233,7 @@ int run(const RunOptions& options) {
         last_csv_write = now;
       }
     }
+    measurements.after_step(sim, finished);
     const double elapsed = progress.seconds_since_start() - wall_start;
     const double fraction = std::max(until_collisions == kNoLimit ? 0.0 : static_cast<double>(sim.collisions()) / static_cast<double>(until_collisions),
                                      std::isfinite(until_time) ? sim.time() / until_time : 0.0);
@@ -261,14 +248,16 @@ int run(const RunOptions& options) {
   if (last_snapshot_events != sim.events()) write_snapshot();
   snapshots->finish();
   write_timeseries(out + "/timeseries.csv", samples, previous_rows);
-  const nlohmann::json summary = summary_json(config, sim, *choice.grid, wall_seconds, reason, equilibrate_collisions,
-                                              snapshots->frames(), samples);
+  nlohmann::json summary = summary_json(config, sim, *choice.grid, wall_seconds, reason, equilibrate_collisions,
+                                        snapshots->frames(), samples);
+  summary["measurements"] = measurements.finish(sim);
   write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
 
   fmt::print("finished ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n", stop_text(reason),
              sim.time(), sim.collisions_per_particle(), sim.collisions(), wall_seconds,
              summary["collisions_per_second"].get<double>());
-  fmt::print("outputs in {}: config.toml, timeseries.csv, summary.json, snapshots.h5 ({} frames)\n", out, snapshots->frames());
+  fmt::print("outputs in {}: config.toml, timeseries.csv, summary.json, snapshots.h5 ({} frames){}\n", out, snapshots->frames(),
+             measurement_dir == out ? std::string{} : "; measurements in " + measurement_dir);
   if (reason == StopReason::kInelasticCollapse) {
     const CollapseReport& c = sim.collapse();
     fmt::print(stderr,

@@ -14,8 +14,11 @@ struct CollisionRecord {
   std::int32_t first = 0;        // disk "1" of thesis Fig 1.3
   std::int32_t second = 0;       // disk "2"
   Vec2 first_position;           // lab position of disk 1 at contact (inside the box)
+  Vec2 contact_point;            // lab position of the contact point, mapped into the box
   Vec2 contact_normal;           // k̂: unit vector from disk 1 to (the image of) disk 2
   Vec2 relative_velocity;        // v21 = v1 − v2 before the collision (image-shifted)
+  Vec2 first_velocity_after;     // lab velocity of disk 1 after the collision
+  Vec2 second_velocity_after;    // lab velocity of disk 2 after the collision (its own, not its image's)
   double impulse = 0.0;          // J·k̂ = (1 + e)/2 (v21·k̂) > 0, momentum given to disk 2
   double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1)

@@ -333,6 +333,11 @@ bool Simulation::execute_collision(std::int32_t i, std::int32_t j) {
     record.first = i;
     record.second = j;
     record.first_position = {x_[at(i)], y_[at(i)]};
+    record.contact_point = record.first_position + (0.5 * params_.diameter) * k_hat;
+    double unused_vx = 0.0;
+    frame_.wrap_into_box(record.contact_point.x, record.contact_point.y, unused_vx, s);
+    record.first_velocity_after = after.v1;
+    record.second_velocity_after = {vx_[at(j)], vy_[at(j)]};
     record.contact_normal = k_hat;
     record.relative_velocity = v1 - v2;
     record.impulse = normal_impulse(v1 - v2, k_hat, e);

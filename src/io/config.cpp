@@ -31,6 +31,10 @@ const std::map<std::string, std::set<std::string>>& schema() {
         "snapshot_every_time"}},
       {"engine", {"particles_per_cell", "cells"}},
       {"diagnostics", {"cells"}},
+      {"fields", {"enabled", "cells", "every_collisions_per_particle", "every_time", "subtract_shear_profile"}},
+      {"collisions",
+       {"impact_parameters", "free_paths", "window_collisions_per_particle", "from_collisions_per_particle",
+        "density_windows", "speed_windows", "impact_bins", "length_bins", "angle_bins", "max_length"}},
   };
   return keys;
 }
@@ -60,7 +64,7 @@ class Reader {
         auto section = schema().find(name);
         if (section == schema().end() || name.empty()) {
           throw ConfigError{fmt::format("unknown section [{}]; allowed sections: system, boundary, "
-                                        "initial, run, output, engine, diagnostics", name)};
+                                        "initial, run, output, engine, diagnostics, fields, collisions", name)};
         }
         for (const auto& [inner, value] : *node.as_table()) {
           const std::string inner_name{inner.str()};
@@ -128,6 +132,35 @@ class Reader {
       if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a > 0.0 && *b > 0.0) return std::pair{*a, *b};
     }
     throw ConfigError{fmt::format("{} = {} is not allowed: expected [Lx, Ly] with two positive numbers", path, show(*node))};
+  }
+
+  std::optional<bool> boolean(const std::string& path) const {
+    const toml::node* node = find(path);
+    if (!node) return std::nullopt;
+    if (!node->is_boolean()) throw ConfigError{fmt::format("{} = {} is not allowed: expected true or false", path, show(*node))};
+    return node->value<bool>();
+  }
+
+  // A list of windows [[low, high], ...] with 0 ≤ low < high.
+  std::vector<std::pair<double, double>> windows(const std::string& path) const {
+    const toml::node* node = find(path);
+    std::vector<std::pair<double, double>> out;
+    if (!node) return out;
+    const toml::array* list = node->as_array();
+    const auto fail = [&] {
+      return ConfigError{fmt::format("{} = {} is not allowed: expected a list of windows [[low, high], ...] with "
+                                     "0 <= low < high", path, show(*node))};
+    };
+    if (!list) throw fail();
+    for (const toml::node& item : *list) {
+      const toml::array* pair = item.as_array();
+      if (!pair || pair->size() != 2) throw fail();
+      const auto low = (*pair)[0].value<double>();
+      const auto high = (*pair)[1].value<double>();
+      if (!low || !high || !std::isfinite(*high) || *low < 0.0 || *low >= *high) throw fail();
+      out.emplace_back(*low, *high);
+    }
+    return out;
   }
 
   std::optional<std::pair<int, int>> int_pair(const std::string& path, int lo, int hi) const {
@@ -254,6 +287,32 @@ RunConfig resolve(const toml::table& root) {
     c.diagnostic_cells = {std::max(1, static_cast<int>(std::lround(s.length_x / side))),
                           std::max(1, static_cast<int>(std::lround(s.length_y / side)))};
   }
+
+  FieldsConfig& f = c.fields;
+  f.enabled = in.boolean("fields.enabled").value_or(true);
+  f.cells = in.int_pair("fields.cells", 1, 1 << 14).value_or(c.diagnostic_cells);
+  f.every_collisions_per_particle = in.number("fields.every_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)");
+  f.every_time = in.number("fields.every_time", 0.0, INFINITY, true, true, "(0, ∞)");
+  if (f.every_collisions_per_particle && f.every_time) {
+    throw ConfigError{"fields.every_collisions_per_particle and fields.every_time are both set: give one"};
+  }
+  f.subtract_shear_profile = in.boolean("fields.subtract_shear_profile").value_or(false);
+
+  CollisionStatisticsConfig& k = c.collisions;
+  k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(true);
+  k.free_paths = in.boolean("collisions.free_paths").value_or(true);
+  k.window_collisions_per_particle =
+      in.number("collisions.window_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)").value_or(1.0);
+  k.from_collisions_per_particle =
+      in.number("collisions.from_collisions_per_particle", 0.0, INFINITY, false, true, "[0, ∞)").value_or(0.0);
+  for (const auto& [low, high] : in.windows("collisions.density_windows")) k.density_windows.push_back({low, high});
+  for (const auto& [low, high] : in.windows("collisions.speed_windows")) k.speed_windows.push_back({low, high});
+  k.impact_bins = static_cast<int>(in.integer("collisions.impact_bins", 2, 100000, "[2, 100000]").value_or(50));
+  k.length_bins = static_cast<int>(in.integer("collisions.length_bins", 2, 100000, "[2, 100000]").value_or(100));
+  k.angle_bins = static_cast<int>(in.integer("collisions.angle_bins", 4, 100000, "[4, 100000]").value_or(72));
+  // Default range: ten mean free paths l = Lx Ly / (2 N σ) (thesis §3.1.2).
+  k.max_length = in.number("collisions.max_length", 0.0, INFINITY, true, true, "(0, ∞)")
+                     .value_or(10.0 * area / (2.0 * n * s.diameter));
   return c;
 }
 
@@ -307,6 +366,23 @@ std::string to_toml(const RunConfig& c) {
   out += fmt::format("\n[engine]\nparticles_per_cell = {:.17g}\n", c.particles_per_cell);
   if (c.engine_cells) out += fmt::format("cells = [{}, {}]\n", c.engine_cells->first, c.engine_cells->second);
   out += fmt::format("\n[diagnostics]\ncells = [{}, {}]\n", c.diagnostic_cells.first, c.diagnostic_cells.second);
+  const FieldsConfig& f = c.fields;
+  out += fmt::format("\n[fields]\nenabled = {}\ncells = [{}, {}]\nsubtract_shear_profile = {}\n", f.enabled, f.cells.first,
+                     f.cells.second, f.subtract_shear_profile);
+  if (f.every_collisions_per_particle) out += fmt::format("every_collisions_per_particle = {:.17g}\n", *f.every_collisions_per_particle);
+  if (f.every_time) out += fmt::format("every_time = {:.17g}\n", *f.every_time);
+  const CollisionStatisticsConfig& k = c.collisions;
+  const auto windows = [](const auto& list) {
+    std::string text;
+    for (const auto& w : list) text += fmt::format("{}[{:.17g}, {:.17g}]", text.empty() ? "" : ", ", w.low, w.high);
+    return "[" + text + "]";
+  };
+  out += fmt::format("\n[collisions]\nimpact_parameters = {}\nfree_paths = {}\nwindow_collisions_per_particle = {:.17g}\n"
+                     "from_collisions_per_particle = {:.17g}\ndensity_windows = {}\nspeed_windows = {}\nimpact_bins = {}\n"
+                     "length_bins = {}\nangle_bins = {}\nmax_length = {:.17g}\n",
+                     k.impact_parameters, k.free_paths, k.window_collisions_per_particle, k.from_collisions_per_particle,
+                     windows(k.density_windows), windows(k.speed_windows), k.impact_bins, k.length_bins, k.angle_bins,
+                     k.max_length);
   return out;
 }
 

@@ -8,10 +8,35 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/density_windows.hpp"
+#include "analysis/free_paths.hpp"
 #include "engine/system_params.hpp"
 #include "init/initial_state.hpp"
 
 namespace granule {
+
+// [fields]: coarse-grained fields of §1.4.3 written to fields.h5 during the run.
+struct FieldsConfig {
+  bool enabled = true;
+  std::pair<int, int> cells{0, 0};  // resolved (default: diagnostics.cells)
+  std::optional<double> every_collisions_per_particle;  // default: with every snapshot
+  std::optional<double> every_time;
+  bool subtract_shear_profile = false;
+};
+
+// [collisions]: impact parameters (§3.2.2) and free paths (§3.2.3) written to collisions.h5.
+struct CollisionStatisticsConfig {
+  bool impact_parameters = true;
+  bool free_paths = true;
+  double window_collisions_per_particle = 1.0;  // W/N: impact-parameter window, density refresh
+  double from_collisions_per_particle = 0.0;    // start of the measurement
+  std::vector<DensityWindow> density_windows;   // particles per unit area
+  std::vector<SpeedWindow> speed_windows;
+  int impact_bins = 50;
+  int length_bins = 100;
+  int angle_bins = 72;
+  double max_length = 0.0;  // resolved (default: 10 l with l = Lx Ly / (2 N σ), §3.1.2)
+};
 
 struct RunConfig {
   std::uint64_t seed = 1;
@@ -30,6 +55,8 @@ struct RunConfig {
   double particles_per_cell = 1.0;
   std::optional<std::pair<int, int>> engine_cells;
   std::pair<int, int> diagnostic_cells{0, 0};  // resolved (auto: ~20 disks per cell)
+  FieldsConfig fields;
+  CollisionStatisticsConfig collisions;
 };
 
 struct ConfigResult {

@@ -1,5 +1,7 @@
 #include "io/snapshot_file.hpp"
 
+#include "io/hdf5_util.hpp"
+
 #include <hdf5.h>
 
 #include <filesystem>
@@ -10,105 +12,10 @@ namespace granule {
 
 namespace {
 
+using namespace h5;
+
 constexpr const char* kFormat = "granule-snapshots";
 constexpr int kFormatVersion = 1;
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5 error while " + what);
-}
-hid_t check_id(hid_t id, const std::string& what) {
-  if (id < 0) throw std::runtime_error("HDF5 error while " + what);
-  return id;
-}
-
-void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1) {
-  const hid_t space = count == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &count, nullptr);
-  const hid_t attribute = check_id(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), name);
-  check(H5Awrite(attribute, type, data), name);
-  H5Aclose(attribute);
-  H5Sclose(space);
-}
-
-void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.size() + 1);
-  H5Tset_strpad(type, H5T_STR_NULLTERM);
-  write_attribute(object, name, type, value.c_str());
-  H5Tclose(type);
-}
-
-template <typename T>
-T read_attribute(hid_t object, const char* name, hid_t type) {
-  T value{};
-  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
-  check(H5Aread(attribute, type, &value), name);
-  H5Aclose(attribute);
-  return value;
-}
-
-std::string read_string_attribute(hid_t object, const char* name) {
-  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
-  const hid_t type = H5Aget_type(attribute);
-  const hid_t memory = H5Tcopy(H5T_C_S1);
-  std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
-  H5Tset_size(memory, buffer.size());
-  check(H5Aread(attribute, memory, buffer.data()), name);
-  H5Tclose(memory);
-  H5Tclose(type);
-  H5Aclose(attribute);
-  return buffer.data();
-}
-
-// An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
-hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row) {
-  std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
-  for (hsize_t d : row) {
-    dims.push_back(d);
-    max.push_back(d);
-    chunk.push_back(d);
-  }
-  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data());
-  const hid_t properties = H5Pcreate(H5P_DATASET_CREATE);
-  H5Pset_chunk(properties, static_cast<int>(chunk.size()), chunk.data());
-  const hid_t dataset = check_id(H5Dcreate2(file, name, type, space, H5P_DEFAULT, properties, H5P_DEFAULT), name);
-  H5Pclose(properties);
-  H5Sclose(space);
-  return dataset;
-}
-
-// Write (grow = true, extending the dataset by one frame) or read one frame of a dataset.
-void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow) {
-  const hid_t dataset = check_id(H5Dopen2(file, name, H5P_DEFAULT), name);
-  hid_t space = H5Dget_space(dataset);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  if (grow) {
-    H5Sclose(space);
-    dims[0] = frame + 1;
-    check(H5Dset_extent(dataset, dims.data()), name);
-    space = H5Dget_space(dataset);
-  }
-  std::vector<hsize_t> start(dims.size(), 0), count = dims;
-  start[0] = frame;
-  count[0] = 1;
-  H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
-  const hid_t memory = H5Screate_simple(rank, count.data(), nullptr);
-  const herr_t status = grow ? H5Dwrite(dataset, type, memory, space, H5P_DEFAULT, data)
-                             : H5Dread(dataset, type, memory, space, H5P_DEFAULT, data);
-  H5Sclose(memory);
-  H5Sclose(space);
-  H5Dclose(dataset);
-  check(status, name);
-}
-
-void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
-  transfer_frame(file, name, type, const_cast<void*>(data), frame, true);
-}
-
-void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame) {
-  transfer_frame(file, name, type, data, frame, false);
-}
 
 // The per-frame scalars of the schema, in one list for writing and reading.
 template <typename Frame, typename Visit>

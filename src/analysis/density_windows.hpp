@@ -1,0 +1,38 @@
+// Density windows (thesis §3.2.2, §3.2.3, §5.2): statistics are collected separately for
+// collisions or particles in cells whose density ρ lies in a window [low, high).  Windows may
+// overlap; an item counts in every window that contains its density.
+#pragma once
+
+#include <vector>
+
+#include "analysis/field_grid.hpp"
+#include "engine/system_params.hpp"
+
+namespace granule {
+
+struct DensityWindow {
+  double low = 0.0;   // particles per unit area
+  double high = 0.0;
+  bool contains(double density) const { return density >= low && density < high; }
+};
+
+// The cell density field of the latest configuration, looked up at collision points.  The run
+// refreshes it at the start of every statistics window, so a collision is classified by the
+// density of its cell at most one window earlier (one collision per particle by default).
+class LocalDensity {
+ public:
+  explicit LocalDensity(const FieldGrid& grid) : grid_(grid), density_(grid.cells(), 0.0) {}
+  void update(const ParticleState& state) {
+    std::fill(density_.begin(), density_.end(), 0.0);
+    for (std::size_t i = 0; i < state.size(); ++i) density_[grid_.index(state.x[i], state.y[i])] += 1.0;
+    for (double& d : density_) d /= grid_.cell_area();
+  }
+  double at(double x, double y) const { return density_[grid_.index(x, y)]; }
+  const FieldGrid& grid() const { return grid_; }
+
+ private:
+  FieldGrid grid_;
+  std::vector<double> density_;
+};
+
+}  // namespace granule

@@ -1,0 +1,71 @@
+// Free paths before collision (thesis §3.2.3): at each collision, for each of the two disks, the
+// path vector l since that disk's previous collision, l = v (t − t_prev) with v its velocity
+// after that collision (a straight flight; across a Lees–Edwards boundary the flight continues
+// straight in the image frame it started in), its speed v = |v| and the density ρ of the cell
+// where the path ends.  Accumulated as the histogram of (l, α) — α the angle of l from the
+// streamwise (x) direction in [0, 2π) — that estimates P̃(l, α; v, ρ) of (3.22), globally, inside
+// density windows and inside speed windows, plus exact sums for the mean free path.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "analysis/density_windows.hpp"
+#include "analysis/histogram.hpp"
+#include "engine/observer.hpp"
+
+namespace granule {
+
+struct SpeedWindow {
+  double low = 0.0, high = 0.0;
+  bool contains(double v) const { return v >= low && v < high; }
+};
+
+// A joint histogram of path length and angle, row-major (length bin, angle bin), plus the paths
+// longer than the last length bin (per angle bin) and exact moments.
+struct PathHistogram {
+  std::vector<double> counts;    // length_bins × angle_bins
+  std::vector<double> overflow;  // angle_bins: paths with l ≥ max_length
+  double paths = 0.0;
+  double sum_length = 0.0;
+  double sum_length_squared = 0.0;
+  double sum_speed = 0.0;
+};
+
+struct FreePathSettings {
+  int length_bins = 100;
+  int angle_bins = 72;
+  double max_length = 1.0;
+  std::vector<DensityWindow> density_windows;
+  std::vector<SpeedWindow> speed_windows;
+};
+
+class FreePathStatistics final : public EventObserver {
+ public:
+  FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density);
+  void on_collision(const CollisionRecord& record) override;
+  // Only paths ending after start() are recorded; paths that began before it are (their start
+  // is known from the disks' earlier collisions).
+  void start() { recording_ = true; }
+
+  const FreePathSettings& settings() const { return settings_; }
+  const UniformBins& length_bins() const { return length_; }
+  const UniformBins& angle_bins() const { return angle_; }
+  const PathHistogram& total() const { return total_; }
+  const std::vector<PathHistogram>& by_density() const { return by_density_; }
+  const std::vector<PathHistogram>& by_speed() const { return by_speed_; }
+
+ private:
+  void record_path(std::int32_t disk, double time, Vec2 end, Vec2 velocity_after);
+
+  FreePathSettings settings_;
+  UniformBins length_, angle_;
+  const LocalDensity* density_;
+  bool recording_ = false;
+  std::vector<double> last_time_;  // NaN until the disk's first collision is seen
+  std::vector<double> last_vx_, last_vy_;
+  PathHistogram total_;
+  std::vector<PathHistogram> by_density_, by_speed_;
+};
+
+}  // namespace granule

@@ -1,0 +1,143 @@
+#include "app/run_measurements.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "analysis/collision_statistics_fits.hpp"
+#include "granule/version.hpp"
+#include "io/collision_statistics_file.hpp"
+
+namespace granule::app {
+
+RunMeasurements::RunMeasurements(const RunConfig& config, std::string out_dir)
+    : config_(config),
+      out_dir_(std::move(out_dir)),
+      frame_{config.system.length_x, config.system.length_y, config.system.shear_velocity},
+      grid_{config.fields.cells.first, config.fields.cells.second, config.system.length_x, config.system.length_y} {}
+
+void RunMeasurements::start(Simulation& sim) {
+  const SystemParams& s = config_.system;
+  const std::string boundary = config_.lees_edwards ? "lees-edwards" : "periodic";
+  if (config_.fields.enabled) {
+    // By default a fields frame goes with every snapshot.
+    const bool own = config_.fields.every_collisions_per_particle || config_.fields.every_time;
+    fields_schedule_ = own ? Schedule{config_.fields.every_collisions_per_particle, config_.fields.every_time}
+                           : Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
+    fields_schedule_.start(s.particles);
+    fields_schedule_.advance(sim);
+    fields_writer_ = std::make_unique<FieldsWriter>(
+        out_dir_ + "/fields.h5", grid_,
+        FieldsMetadata{s, boundary, config_.fields.subtract_shear_profile, "run", kVersion}, true);
+    collisional_ = std::make_unique<CollisionalStressField>(grid_, s.diameter);
+    sim.add_observer(collisional_.get());
+    interval_moments_ = std::make_unique<CellMoments>(grid_);
+    write_fields_frame(sim);
+  }
+  const CollisionStatisticsConfig& k = config_.collisions;
+  if (k.impact_parameters || k.free_paths) {
+    density_ = std::make_unique<LocalDensity>(grid_);
+    density_->update(sim.state());
+    statistics_start_ = std::max<std::int64_t>(sim.collisions(), std::llround(k.from_collisions_per_particle * static_cast<double>(s.particles)));
+    const std::int64_t window = std::max<std::int64_t>(1, std::llround(k.window_collisions_per_particle * static_cast<double>(s.particles)));
+    if (k.impact_parameters) {
+      impacts_ = std::make_unique<ImpactParameterStatistics>(s.diameter, k.impact_bins, window, k.density_windows, density_.get());
+    }
+    if (k.free_paths) {
+      // Attached from the start: a path's beginning is the disk's previous collision.
+      paths_ = std::make_unique<FreePathStatistics>(
+          s.particles, FreePathSettings{k.length_bins, k.angle_bins, k.max_length, k.density_windows, k.speed_windows},
+          density_.get());
+      sim.add_observer(paths_.get());
+    }
+    after_step(sim, false);
+  }
+}
+
+std::int64_t RunMeasurements::next_collisions() const {
+  std::int64_t next = fields_writer_ ? fields_schedule_.next_collisions : kNoLimit;
+  if (density_) next = std::min(next, statistics_started_ ? windows_.next_collisions : statistics_start_);
+  return next;
+}
+
+double RunMeasurements::next_time() const { return fields_writer_ ? fields_schedule_.next_time : kInf; }
+
+void RunMeasurements::after_step(Simulation& sim, bool final) {
+  if (density_ && !statistics_started_ && sim.collisions() >= statistics_start_) {
+    statistics_started_ = true;
+    statistics_from_t_ = sim.time();
+    statistics_from_c_ = sim.collisions_per_particle();
+    if (impacts_) sim.add_observer(impacts_.get());
+    if (paths_) paths_->start();
+    windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
+    windows_.start(config_.system.particles);
+    windows_.next_collisions = sim.collisions() + windows_.collisions_at(config_.collisions.window_collisions_per_particle);
+    density_->update(sim.state());
+  } else if (statistics_started_ && windows_.due(sim)) {
+    // Classify the next window's collisions by the density at its start.
+    density_->update(sim.state());
+    windows_.advance(sim);
+  }
+  if (fields_writer_ && (fields_schedule_.due(sim) || final) && sim.collisions() != last_fields_collisions_) {
+    write_fields_frame(sim);
+    fields_schedule_.advance(sim);
+  }
+}
+
+void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisions) {
+  if (!interval_moments_) return;
+  interval_moments_->add(state, frame_, config_.fields.subtract_shear_profile);
+  last_sample_collisions_ = collisions;
+}
+
+void RunMeasurements::write_fields_frame(const Simulation& sim) {
+  const bool subtract = config_.fields.subtract_shear_profile;
+  const ParticleState state = sim.state();
+  CellMoments instant(grid_);
+  instant.add(state, frame_, subtract);
+  // The interval average includes the configuration that closes it (once).
+  if (last_sample_collisions_ != sim.collisions()) interval_moments_->add(state, frame_, subtract);
+  FieldsFrame frame;
+  frame.t = sim.time();
+  frame.c = sim.collisions_per_particle();
+  frame.t_start = interval_start_t_;
+  frame.c_start = interval_start_c_;
+  frame.configurations = interval_moments_->configurations;
+  frame.instant = fields_from_moments(instant, frame_, sim.shear_offset(), subtract);
+  frame.average = fields_from_moments(*interval_moments_, frame_, sim.shear_offset(), subtract);
+  frame.collisional = collisional_->stress(sim.time());
+  fields_writer_->append(frame);
+  last_fields_collisions_ = sim.collisions();
+  interval_moments_ = std::make_unique<CellMoments>(grid_);
+  collisional_->restart(sim.time());
+  interval_start_t_ = frame.t;
+  interval_start_c_ = frame.c;
+}
+
+nlohmann::json RunMeasurements::finish(const Simulation& sim) {
+  nlohmann::json j = nlohmann::json::object();
+  if (fields_writer_) {
+    fields_writer_->finish();
+    j["fields_frames"] = fields_writer_->frames();
+  }
+  if (!density_) return j;
+  const SystemParams& s = config_.system;
+  write_collision_statistics(out_dir_,
+                             {s, config_.lees_edwards ? "lees-edwards" : "periodic", kVersion, statistics_from_t_,
+                              statistics_from_c_, sim.time(), sim.collisions_per_particle(), grid_},
+                             impacts_.get(), paths_.get());
+  if (impacts_) {
+    const ImpactParameterSummary b = summarize_impact_parameters(impacts_->total(), impacts_->bins());
+    j["impact_parameters"] = {{"collisions", b.samples}, {"max_abs_B_minus_uniform", b.ks_uniform}};
+  }
+  if (paths_) {
+    const FreePathSummary p = summarize_free_paths(paths_->total(), paths_->length_bins(), paths_->angle_bins());
+    j["free_paths"] = {{"paths", p.paths},           {"mean_length", p.mean_length},  {"l0_matched_eq_3_36", p.l0_matched},
+                       {"alpha0_eq_3_24", p.alpha0}, {"lbar_eq_3_24", p.lbar},        {"ks_matched", p.ks_matched},
+                       {"ks_exponential", p.ks_exponential},
+                       {"thesis_mean_free_path", s.length_x * s.length_y / (2.0 * static_cast<double>(s.particles) * s.diameter)}};
+  }
+  j["collision_statistics_from_c"] = statistics_from_c_;
+  return j;
+}
+
+}  // namespace granule::app

@@ -1,0 +1,66 @@
+// The measurements of a run beyond its time series (configured in [fields] and [collisions]):
+// coarse-grained fields written to fields.h5 as the run goes, and the collision statistics
+// (impact parameters, free paths) written to collisions.h5 at its end.  The run loop asks when it
+// must stop for them and calls back after each step; the observers see every collision.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "analysis/cell_fields.hpp"
+#include "analysis/collisional_stress.hpp"
+#include "analysis/free_paths.hpp"
+#include "analysis/impact_parameters.hpp"
+#include "app/schedule.hpp"
+#include "engine/simulation.hpp"
+#include "io/config.hpp"
+#include "io/fields_file.hpp"
+
+namespace granule::app {
+
+class RunMeasurements {
+ public:
+  // `out_dir` receives fields.h5 and collisions.h5 (+ CSV tables).
+  RunMeasurements(const RunConfig& config, std::string out_dir);
+
+  // Attach the observers and write the first fields frame.
+  void start(Simulation& sim);
+  // The earliest collision count and time at which the loop must stop for a measurement.
+  std::int64_t next_collisions() const;
+  double next_time() const;
+  // After every step of the loop: start the collision statistics, refresh the local density at
+  // window boundaries, write a fields frame when one is due (`final` forces one).
+  void after_step(Simulation& sim, bool final);
+  // A configuration sampled by the run (output.every_*): added to the fields' interval average.
+  void on_sample(const ParticleState& state, std::int64_t collisions);
+  // Write collisions.h5 and close fields.h5.  Returns the summary figures for summary.json.
+  nlohmann::json finish(const Simulation& sim);
+
+ private:
+  void write_fields_frame(const Simulation& sim);
+
+  RunConfig config_;
+  std::string out_dir_;
+  ShearFrame frame_;
+  FieldGrid grid_;
+  // fields
+  Schedule fields_schedule_;
+  std::unique_ptr<FieldsWriter> fields_writer_;
+  std::unique_ptr<CellMoments> interval_moments_;
+  std::unique_ptr<CollisionalStressField> collisional_;
+  double interval_start_t_ = 0.0, interval_start_c_ = 0.0;
+  std::int64_t last_fields_collisions_ = -1;
+  std::int64_t last_sample_collisions_ = -1;  // the configuration last added to the interval
+  // collision statistics
+  std::unique_ptr<LocalDensity> density_;
+  std::unique_ptr<ImpactParameterStatistics> impacts_;
+  std::unique_ptr<FreePathStatistics> paths_;
+  std::int64_t statistics_start_ = 0;  // collision count at which recording starts
+  bool statistics_started_ = false;
+  double statistics_from_t_ = 0.0, statistics_from_c_ = 0.0;
+  Schedule windows_;
+};
+
+}  // namespace granule::app

@@ -1,0 +1,180 @@
+#include "io/collision_statistics_file.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "analysis/collision_statistics_fits.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_util.hpp"
+
+namespace granule {
+
+using namespace h5;
+
+namespace {
+
+constexpr const char* kFormat = "granule-collisions";
+constexpr int kFormatVersion = 1;
+
+hsize_t size(std::size_t n) { return static_cast<hsize_t>(n); }
+
+void write_vector(hid_t group, const char* name, const std::vector<double>& v) { write_dataset(group, name, {size(v.size())}, v); }
+
+void write_double(hid_t object, const char* name, double value) { write_attribute(object, name, H5T_NATIVE_DOUBLE, &value); }
+
+std::vector<double> edges(const UniformBins& bins) {
+  std::vector<double> out;
+  for (int k = 0; k <= bins.bins; ++k) out.push_back(bins.edge(k));
+  return out;
+}
+
+void write_impact_summary(hid_t group, const std::vector<double>& counts, const UniformBins& bins) {
+  const ImpactParameterSummary s = summarize_impact_parameters(counts, bins);
+  write_vector(group, "counts", counts);
+  write_vector(group, "density", s.density);
+  write_vector(group, "cumulative_minus_uniform", s.cumulative_minus_uniform);
+  write_double(group, "samples", s.samples);
+  write_double(group, "ks_uniform", s.ks_uniform);
+}
+
+void write_impacts(hid_t file, const ImpactParameterStatistics& impacts) {
+  const hid_t g = create_group(file, "impact_parameters");
+  const UniformBins& bins = impacts.bins();
+  const auto window = impacts.window_collisions();
+  write_attribute(g, "window_collisions", H5T_NATIVE_INT64, &window);
+  write_vector(g, "bin_edges", edges(bins));
+  const hid_t total = create_group(g, "total");
+  write_impact_summary(total, impacts.total(), bins);
+  H5Gclose(total);
+
+  const hid_t windows = create_group(g, "windows");
+  std::vector<double> t_start, t_end, collisions, counts;
+  for (const auto& w : impacts.windows()) {
+    t_start.push_back(w.t_start);
+    t_end.push_back(w.t_end);
+    collisions.push_back(static_cast<double>(w.collisions));
+    counts.insert(counts.end(), w.counts.begin(), w.counts.end());
+  }
+  write_vector(windows, "t_start", t_start);
+  write_vector(windows, "t_end", t_end);
+  write_vector(windows, "collisions", collisions);
+  write_dataset(windows, "counts", {size(t_start.size()), size(bins.bins)}, counts);
+  H5Gclose(windows);
+
+  for (std::size_t w = 0; w < impacts.density_windows().size(); ++w) {
+    const hid_t d = create_group(g, fmt::format("density_window_{}", w).c_str());
+    write_double(d, "density_low", impacts.density_windows()[w].low);
+    write_double(d, "density_high", impacts.density_windows()[w].high);
+    write_impact_summary(d, impacts.by_density()[w], bins);
+    H5Gclose(d);
+  }
+  H5Gclose(g);
+}
+
+void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStatistics& paths) {
+  const FreePathSummary s = summarize_free_paths(h, paths.length_bins(), paths.angle_bins());
+  const std::vector<hsize_t> joint{size(static_cast<std::size_t>(paths.length_bins().bins)),
+                                   size(static_cast<std::size_t>(paths.angle_bins().bins))};
+  write_dataset(group, "counts", joint, h.counts);
+  write_vector(group, "overflow", h.overflow);
+  write_dataset(group, "cumulative", joint, s.cumulative);
+  write_vector(group, "magnitude_density", s.magnitude_density);
+  write_vector(group, "matched_density", s.matched_density);
+  write_vector(group, "exponential_density", s.exponential_density);
+  write_vector(group, "length_cumulative", s.length_cumulative);
+  write_vector(group, "angular_cumulative", s.angular_cumulative);
+  write_vector(group, "angular_fit", s.angular_fit);
+  const std::vector<std::pair<const char*, double>> scalars{
+      {"paths", s.paths}, {"mean_length", s.mean_length}, {"mean_speed", s.mean_speed},
+      {"mean_length_squared", h.paths > 0 ? h.sum_length_squared / h.paths : 0.0},
+      {"alpha0", s.alpha0}, {"alpha0_rms", s.alpha0_rms}, {"lbar", s.lbar}, {"lbar_rms", s.lbar_rms},
+      {"l0_matched", s.l0_matched}, {"lambda_exponential", s.lambda_exponential},
+      {"ks_matched", s.ks_matched}, {"ks_exponential", s.ks_exponential}};
+  for (const auto& [name, value] : scalars) write_double(group, name, value);
+}
+
+void write_paths(hid_t file, const FreePathStatistics& paths) {
+  const hid_t g = create_group(file, "free_paths");
+  write_vector(g, "length_edges", edges(paths.length_bins()));
+  write_vector(g, "angle_edges", edges(paths.angle_bins()));
+  const hid_t total = create_group(g, "total");
+  write_path_summary(total, paths.total(), paths);
+  H5Gclose(total);
+  const FreePathSettings& s = paths.settings();
+  for (std::size_t w = 0; w < s.density_windows.size(); ++w) {
+    const hid_t d = create_group(g, fmt::format("density_window_{}", w).c_str());
+    write_double(d, "density_low", s.density_windows[w].low);
+    write_double(d, "density_high", s.density_windows[w].high);
+    write_path_summary(d, paths.by_density()[w], paths);
+    H5Gclose(d);
+  }
+  for (std::size_t w = 0; w < s.speed_windows.size(); ++w) {
+    const hid_t d = create_group(g, fmt::format("speed_window_{}", w).c_str());
+    write_double(d, "speed_low", s.speed_windows[w].low);
+    write_double(d, "speed_high", s.speed_windows[w].high);
+    write_path_summary(d, paths.by_speed()[w], paths);
+    H5Gclose(d);
+  }
+  H5Gclose(g);
+}
+
+std::string impact_csv(const ImpactParameterStatistics& impacts) {
+  const UniformBins& bins = impacts.bins();
+  std::vector<ImpactParameterSummary> columns{summarize_impact_parameters(impacts.total(), bins)};
+  std::string out = "b_over_sigma,beta,B_minus_uniform";
+  for (std::size_t w = 0; w < impacts.density_windows().size(); ++w) {
+    columns.push_back(summarize_impact_parameters(impacts.by_density()[w], bins));
+    out += fmt::format(",beta_rho{0},B_minus_uniform_rho{0}", w);
+  }
+  out += "\n";
+  for (int k = 0; k < bins.bins; ++k) {
+    out += fmt::format("{:.6g}", bins.center(k));
+    for (const auto& c : columns) {
+      out += fmt::format(",{:.9g},{:.9g}", c.density[static_cast<std::size_t>(k)], c.cumulative_minus_uniform[static_cast<std::size_t>(k)]);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string paths_csv(const FreePathStatistics& paths) {
+  const FreePathSummary s = summarize_free_paths(paths.total(), paths.length_bins(), paths.angle_bins());
+  std::string out = "l,P_measured,P_matched_eq_3_36,P_exponential,L_cumulative\n";
+  for (int k = 0; k < paths.length_bins().bins; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    out += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", paths.length_bins().center(k), s.magnitude_density[i],
+                       s.matched_density[i], s.exponential_density[i], s.length_cumulative[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_collision_statistics(const std::string& dir, const CollisionStatisticsMetadata& m,
+                                const ImpactParameterStatistics* impacts, const FreePathStatistics* paths) {
+  if (!impacts && !paths) return;
+  const std::string path = dir + "/collisions.h5", partial = path + ".partial";
+  const hid_t file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  write_string_attribute(file, "format", kFormat);
+  write_attribute(file, "format_version", H5T_NATIVE_INT, &kFormatVersion);
+  write_string_attribute(file, "granule_version", m.version);
+  write_string_attribute(file, "boundary", m.boundary);
+  write_attribute(file, "particles", H5T_NATIVE_INT64, &m.system.particles);
+  for (const auto& [name, value] : std::vector<std::pair<const char*, double>>{
+           {"diameter", m.system.diameter}, {"restitution", m.system.restitution},
+           {"shear_velocity", m.system.shear_velocity}, {"length_x", m.system.length_x}, {"length_y", m.system.length_y},
+           {"from_t", m.from_t}, {"from_c", m.from_c}, {"to_t", m.to_t}, {"to_c", m.to_c}}) {
+    write_double(file, name, value);
+  }
+  write_attribute(file, "density_cells_nx", H5T_NATIVE_INT, &m.density_grid.nx);
+  write_attribute(file, "density_cells_ny", H5T_NATIVE_INT, &m.density_grid.ny);
+  if (impacts) write_impacts(file, *impacts);
+  if (paths) write_paths(file, *paths);
+  H5Fclose(file);
+  std::filesystem::rename(partial, path);
+  if (impacts) write_file_atomically(dir + "/impact_parameters.csv", impact_csv(*impacts));
+  if (paths) write_file_atomically(dir + "/free_paths.csv", paths_csv(*paths));
+}
+
+}  // namespace granule

@@ -1,0 +1,135 @@
+#include "io/fields_file.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "io/hdf5_util.hpp"
+
+namespace granule {
+
+using namespace h5;
+
+namespace {
+
+constexpr const char* kFormat = "granule-fields";
+constexpr int kFormatVersion = 1;
+
+// The collisional and total stress datasets of the interval average, in one list.
+template <typename Visit>
+void for_each_stress(Visit&& visit) {
+  for (const char* name : {"collisional_xx", "collisional_xy", "collisional_yy", "pressure_collisional",
+                           "collisions", "total_xx", "total_xy", "total_yy", "pressure_total"}) {
+    visit(name);
+  }
+}
+
+// The frame scalars, in one list.
+template <typename Frame, typename Visit>
+void for_each_scalar(Frame& f, Visit&& visit) {
+  visit("/frames/t", f.t);
+  visit("/frames/c", f.c);
+  visit("/frames/t_start", f.t_start);
+  visit("/frames/c_start", f.c_start);
+}
+
+}  // namespace
+
+struct FieldsWriter::Handles {
+  hid_t file = -1;
+};
+
+FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
+    : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {
+  const std::string partial = path + ".partial";
+  handles_->file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  const hid_t f = handles_->file;
+  write_string_attribute(f, "format", kFormat);
+  write_attribute(f, "format_version", H5T_NATIVE_INT, &kFormatVersion);
+  write_string_attribute(f, "granule_version", m.version);
+  write_string_attribute(f, "source", m.source);
+  write_string_attribute(f, "boundary", m.boundary);
+  write_attribute(f, "nx", H5T_NATIVE_INT, &grid.nx);
+  write_attribute(f, "ny", H5T_NATIVE_INT, &grid.ny);
+  write_attribute(f, "length_x", H5T_NATIVE_DOUBLE, &grid.length_x);
+  write_attribute(f, "length_y", H5T_NATIVE_DOUBLE, &grid.length_y);
+  write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
+  write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
+  write_attribute(f, "restitution", H5T_NATIVE_DOUBLE, &m.system.restitution);
+  write_attribute(f, "shear_velocity", H5T_NATIVE_DOUBLE, &m.system.shear_velocity);
+  const int subtract = m.subtract_shear_profile ? 1 : 0;
+  write_attribute(f, "subtract_shear_profile", H5T_NATIVE_INT, &subtract);
+  for (const char* group : {"/frames", "/instant", "/average", "/profiles"}) H5Gclose(create_group(f, group));
+
+  const std::vector<hsize_t> cells{static_cast<hsize_t>(grid.ny), static_cast<hsize_t>(grid.nx)};
+  const std::vector<hsize_t> rows{static_cast<hsize_t>(grid.ny)};
+  FieldsFrame shape;
+  for_each_scalar(shape, [&](const char* name, double&) { H5Dclose(create_frames(f, name, H5T_NATIVE_DOUBLE, {})); });
+  H5Dclose(create_frames(f, "/average/configurations", H5T_NATIVE_INT, {}));
+  for_each_field(shape.instant, [&](const char* name, std::vector<double>&) {
+    H5Dclose(create_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
+    H5Dclose(create_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
+  });
+  if (with_collisional_) {
+    for_each_stress([&](const char* name) {
+      H5Dclose(create_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
+    });
+  }
+  std::vector<double> y;
+  for (int iy = 0; iy < grid.ny; ++iy) y.push_back(grid.center_y(iy));
+  write_dataset(f, "/profiles/y", rows, y);
+  for (const char* name : {"density", "velocity_x", "velocity_y", "temperature"}) {
+    H5Dclose(create_frames(f, (std::string("/profiles/") + name).c_str(), H5T_NATIVE_DOUBLE, rows));
+  }
+}
+
+FieldsWriter::~FieldsWriter() {
+  if (handles_ && handles_->file >= 0) H5Fclose(handles_->file);
+}
+
+void FieldsWriter::append(const FieldsFrame& frame) {
+  const hid_t f = handles_->file;
+  const auto at = static_cast<hsize_t>(frames_);
+  for_each_scalar(frame, [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); });
+  append_frame(f, "/average/configurations", H5T_NATIVE_INT, &frame.configurations, at);
+  for_each_field(frame.instant, [&](const char* name, const std::vector<double>& v) {
+    append_frame(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
+  });
+  for_each_field(frame.average, [&](const char* name, const std::vector<double>& v) {
+    append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
+  });
+  if (with_collisional_) {
+    if (!frame.collisional) throw std::logic_error("fields frame without the collisional stress");
+    const CollisionalStress& c = *frame.collisional;
+    const CellFields& k = frame.average;
+    const std::size_t n = grid_.cells();
+    std::vector<double> pc(n), txx(n), txy(n), tyy(n), pt(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      pc[i] = 0.5 * (c.xx[i] + c.yy[i]);
+      txx[i] = k.kinetic_xx[i] + c.xx[i];  // total stress (1.7)
+      txy[i] = k.kinetic_xy[i] + c.xy[i];
+      tyy[i] = k.kinetic_yy[i] + c.yy[i];
+      pt[i] = 0.5 * (txx[i] + tyy[i]);
+    }
+    const std::vector<const std::vector<double>*> data{&c.xx, &c.xy, &c.yy, &pc, &c.collisions, &txx, &txy, &tyy, &pt};
+    std::size_t next = 0;
+    for_each_stress([&](const char* name) {
+      append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, data[next++]->data(), at);
+    });
+  }
+  const StreamwiseProfiles p = streamwise_profiles(frame.instant);
+  const std::vector<std::pair<const char*, const std::vector<double>*>> profiles{
+      {"/profiles/density", &p.density}, {"/profiles/velocity_x", &p.velocity_x},
+      {"/profiles/velocity_y", &p.velocity_y}, {"/profiles/temperature", &p.temperature}};
+  for (const auto& [name, v] : profiles) append_frame(f, name, H5T_NATIVE_DOUBLE, v->data(), at);
+  H5Fflush(f, H5F_SCOPE_GLOBAL);
+  ++frames_;
+}
+
+void FieldsWriter::finish() {
+  if (handles_->file < 0) return;
+  H5Fclose(handles_->file);
+  handles_->file = -1;
+  std::filesystem::rename(path_ + ".partial", path_);
+}
+
+}  // namespace granule

@@ -1,0 +1,54 @@
+// HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
+// instantaneous fields of the configuration, the fields averaged over the interval since the
+// previous frame (with the collisional stress (1.6) when collisions were observed), and the
+// streamwise profiles.  Written to `<name>.partial`, renamed by finish().
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "analysis/cell_fields.hpp"
+#include "analysis/collisional_stress.hpp"
+
+namespace granule {
+
+struct FieldsMetadata {
+  SystemParams system;
+  std::string boundary;  // "periodic" or "lees-edwards"
+  bool subtract_shear_profile = false;
+  std::string source;    // "run" (measured during the run) or the snapshot file analysed
+  std::string version;
+};
+
+struct FieldsFrame {
+  double t = 0.0, c = 0.0;              // time and collisions per particle of the frame
+  double t_start = 0.0, c_start = 0.0;  // start of the averaging interval
+  int configurations = 0;               // configurations in the interval average
+  CellFields instant;
+  CellFields average;
+  std::optional<CollisionalStress> collisional;  // only when collisions were observed
+};
+
+class FieldsWriter {
+ public:
+  FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& metadata, bool with_collisional);
+  ~FieldsWriter();
+  FieldsWriter(const FieldsWriter&) = delete;
+  FieldsWriter& operator=(const FieldsWriter&) = delete;
+
+  void append(const FieldsFrame& frame);
+  std::int64_t frames() const { return frames_; }
+  void finish();
+
+ private:
+  struct Handles;
+  std::unique_ptr<Handles> handles_;
+  std::string path_;
+  FieldGrid grid_;
+  bool with_collisional_;
+  std::int64_t frames_ = 0;
+};
+
+}  // namespace granule

@@ -1,0 +1,38 @@
+// Small wrappers over the HDF5 C API shared by Granule's files (snapshots, fields, collision
+// statistics): error checks that throw, attributes, and extendible per-frame datasets.
+#pragma once
+
+#include <hdf5.h>
+
+#include <string>
+#include <vector>
+
+namespace granule::h5 {
+
+void check(herr_t status, const std::string& what);
+hid_t check_id(hid_t id, const std::string& what);
+
+void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1);
+void write_string_attribute(hid_t object, const char* name, const std::string& value);
+template <typename T>
+T read_attribute(hid_t object, const char* name, hid_t type) {
+  T value{};
+  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
+  check(H5Aread(attribute, type, &value), name);
+  H5Aclose(attribute);
+  return value;
+}
+std::string read_string_attribute(hid_t object, const char* name);
+
+// An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
+hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
+// Write (grow = true, extending the dataset by one frame) or read one frame of a dataset.
+void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow);
+void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame);
+void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame);
+
+// A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
+void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);
+hid_t create_group(hid_t location, const char* name);
+
+}  // namespace granule::h5
