@@ -9,5 +9,6 @@ namespace granule::app {
 void add_analyze_command(CLI::App& root);
 
 // One per analysis (src/app/analyze_*.cpp).
+void add_analyze_fields(CLI::App& analyze);
 
 }  // namespace granule::app

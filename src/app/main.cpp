@@ -3,6 +3,7 @@
 
 #include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
+#include "app/plot_command.hpp"
 #include "app/run_command.hpp"
 #include "app/theory_command.hpp"
 #include "granule/version.hpp"
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   granule::app::add_bench_command(app);
   granule::app::add_theory_command(app);
   granule::app::add_analyze_command(app);
+  granule::app::add_plot_command(app);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "app/plot_run_picture.hpp"
 #include "app/progress.hpp"
 #include "app/run_measurements.hpp"
 #include "app/schedule.hpp"
@@ -252,6 +253,11 @@ int run(const RunOptions& options) {
                                         snapshots->frames(), samples);
   summary["measurements"] = measurements.finish(sim);
   write_file_atomically(out + "/summary.json", summary.dump(2) + "\n");
+  try {
+    fmt::print("picture: {}\n", render_run_picture(out));
+  } catch (const std::exception& error) {  // a missing picture must not lose the run's data
+    fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
+  }
 
   fmt::print("finished ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n", stop_text(reason),
              sim.time(), sim.collisions_per_particle(), sim.collisions(), wall_seconds,

@@ -1,0 +1,17 @@
+// `granule plot <kind> RUN_DIR_or_FILE ...`: the thesis's pictures from a run's outputs
+// (docs/plots.md).  Configuration pictures and movies use the C++ renderer (src/render); line
+// plots and maps run matplotlib scripts (python/granule_plots) with Debian's Python.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace granule::app {
+
+void add_plot_command(CLI::App& root);
+
+// One per file (src/app/plot_*.cpp).
+void add_plot_picture_commands(CLI::App& plot);     // config, movie
+void add_plot_matplotlib_commands(CLI::App& plot);  // fields, timeseries, profiles, phase
+void add_plot_export_command(CLI::App& plot);       // export (extended XYZ, VTK)
+
+}  // namespace granule::app

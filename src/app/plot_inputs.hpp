@@ -1,0 +1,37 @@
+// Shared plumbing of `granule plot ...`: finding a run's files, default output names, running
+// helper programs (Debian's Python for matplotlib, ffmpeg) and mapping errors to exit codes.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace granule::app {
+
+// Bad input (exit code 2, nothing written): the message names the option and the allowed range.
+struct BadPlotInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// RUN_DIR_or_FILE → the file: a directory gives `<dir>/<name>` (or `<name>.partial` while the run
+// is still going), a file is itself.  Throws BadPlotInput when there is no such file.
+std::string locate_run_file(const std::string& run_dir_or_file, const std::string& name);
+
+// Default output: `<dir>/<name>` for a run directory, `<file's folder>/<name>` for a file.
+std::string output_beside(const std::string& run_dir_or_file, const std::string& name);
+
+// Resolve a frame index (negative counts from the end) among `frames`; throws BadPlotInput naming --frame.
+std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames);
+
+// Runs a program (argv[0] is looked up in PATH) and returns its exit code (127 if it cannot start).
+int run_program(const std::vector<std::string>& argv);
+
+// Runs a script of python/granule_plots with Debian's Python; returns its exit code.
+int run_plot_script(const std::string& script, const std::vector<std::string>& arguments);
+
+// Runs a plot command's body and ends the program with its exit code: 2 on BadPlotInput, 1 on
+// any other error (messages prefixed with "granule plot <kind>: error:").
+[[noreturn]] void finish_plot_command(const std::string& kind, const std::function<int()>& body);
+
+}  // namespace granule::app

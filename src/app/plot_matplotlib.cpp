@@ -1,0 +1,90 @@
+// `granule plot fields | timeseries | profiles | phase`: line plots and shaded maps drawn by the
+// matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3).
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "app/plot_command.hpp"
+#include "app/plot_inputs.hpp"
+
+namespace granule::app {
+
+namespace {
+
+struct ScriptArguments {
+  std::string input;
+  std::string out;
+  std::int64_t frame = -1;
+  int dpi = 100;
+  std::string group = "average";
+  std::vector<std::string> quantities;
+  std::string colormap = "gray";
+  std::int64_t max_points = 200000;
+};
+
+// One matplotlib kind: its script, the run file it reads and its default output name.
+struct ScriptKind {
+  const char* name;
+  const char* script;
+  const char* input_file;
+  const char* output_file;
+  const char* description;
+};
+
+int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
+  if (a.dpi < 20 || a.dpi > 600) throw BadPlotInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
+  const std::string input = locate_run_file(a.input, kind.input_file);
+  const std::string out = a.out.empty() ? output_beside(a.input, kind.output_file) : a.out;
+  std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi)};
+  if (std::string_view(kind.name) == "fields") {
+    arguments.insert(arguments.end(), {"--group", a.group, "--colormap", a.colormap});
+    if (!a.quantities.empty()) {
+      arguments.emplace_back("--quantities");
+      arguments.insert(arguments.end(), a.quantities.begin(), a.quantities.end());
+    }
+  }
+  if (std::string_view(kind.name) == "phase") arguments.insert(arguments.end(), {"--max-points", std::to_string(a.max_points)});
+  const int status = run_plot_script(kind.script, arguments);
+  if (status == 0) fmt::print("wrote {}\n", out);
+  return status;
+}
+
+constexpr ScriptKind kKinds[] = {
+    {"fields", "fields", "fields.h5", "fields.png",
+     "Shaded maps of density, temperature, kinetic and collisional pressure from fields.h5 "
+     "(thesis Figs 2.4, 2.12-2.18, 3.5-3.14)"},
+    {"timeseries", "timeseries", "timeseries.csv", "timeseries.png",
+     "Global diagnostics against c and t from timeseries.csv (thesis Figs 2.5-2.7, 3.6)"},
+    {"profiles", "profiles", "fields.h5", "profiles.png",
+     "Streamwise-averaged profiles V_x, V_y, density, T against y from fields.h5 (thesis Figs 3.15-3.16)"},
+    {"phase", "phase", "snapshots.h5", "phase.png",
+     "Phase-space scatter plots of one snapshot: x, y against v_x, v_y (thesis Figs 2.1, 2.11, 2.13)"},
+};
+
+}  // namespace
+
+void add_plot_matplotlib_commands(CLI::App& plot) {
+  for (const ScriptKind& kind : kKinds) {
+    auto a = std::make_shared<ScriptArguments>();
+    CLI::App* c = plot.add_subcommand(kind.name, kind.description);
+    c->add_option("input", a->input, fmt::format("Run directory or {}", kind.input_file))->required();
+    c->add_option("--out", a->out, fmt::format("PNG file (default: {} beside the input)", kind.output_file));
+    c->add_option("--dpi", a->dpi, "Resolution, 20 … 600 dots per inch (the figure size in inches is fixed)")->capture_default_str();
+    if (std::string_view(kind.name) != "timeseries") {
+      c->add_option("--frame", a->frame, "Frame index (negative counts from the end)")->capture_default_str();
+    }
+    if (std::string_view(kind.name) == "fields") {
+      c->add_option("--group", a->group, "average (over the interval ending at the frame) or instant")->capture_default_str();
+      c->add_option("--quantities", a->quantities,
+                    "Maps to draw (default: density temperature pressure_kinetic pressure_collisional)");
+      c->add_option("--colormap", a->colormap, "matplotlib colormap (gray: lighter for higher, as the thesis)")
+          ->capture_default_str();
+    }
+    if (std::string_view(kind.name) == "phase") {
+      c->add_option("--max-points", a->max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
+    }
+    c->callback([a, &kind] { finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); }); });
+  }
+}
+
+}  // namespace granule::app

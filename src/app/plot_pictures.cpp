@@ -1,0 +1,152 @@
+// `granule plot config` (one configuration picture, thesis Figs 2.2, 2.3, 3.4, 3.10) and
+// `granule plot movie` (one such picture per snapshot, encoded as mp4 by ffmpeg).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include "app/plot_command.hpp"
+#include "app/plot_inputs.hpp"
+#include "app/plot_run_picture.hpp"
+
+namespace granule::app {
+
+namespace {
+
+struct PictureArguments {
+  std::string input;
+  std::string out;
+  std::int64_t frame = -1;
+  int width = 1000;
+  std::string color = "direction";
+  std::string field = "density";
+  std::vector<int> cells;
+  bool no_arrows = false;
+  bool relative = false;
+  bool no_legend = false;
+  double min_radius = 0.6;
+};
+
+void add_picture_options(CLI::App* command, PictureArguments& a) {
+  command->add_option("input", a.input, "Run directory or snapshot file (snapshots.h5)")->required();
+  command->add_option("--width", a.width, "Picture width in pixels, 16 … 20000 (the height follows the box)")
+      ->capture_default_str();
+  command->add_option("--color", a.color,
+                      "Disk colours: direction (hue wheel, thesis Fig 1.1), speed, field (a cell field), none")
+      ->capture_default_str();
+  command->add_option("--field", a.field,
+                      "Cell field for --color field: density, temperature, velocity_x, velocity_y, kinetic_xx, "
+                      "kinetic_xy, kinetic_yy, pressure_kinetic, vorticity, count")
+      ->capture_default_str();
+  command->add_option("--cells", a.cells, "Coarse-graining grid NX NY of the arrows and field colours (default: ~40 disks a cell)")
+      ->expected(2);
+  command->add_flag("--no-arrows", a.no_arrows, "Do not draw the coarse-grained velocity field");
+  command->add_flag("--relative", a.relative, "Lees–Edwards: velocities relative to the mean shear flow u(y) = γ (y − L_y/2)");
+  command->add_flag("--no-legend", a.no_legend, "Do not draw the colour wheel / colour bar");
+  command->add_option("--min-radius", a.min_radius, "Smallest disk radius drawn, in pixels, 0 … 10")->capture_default_str();
+}
+
+render::PictureOptions picture_options(const PictureArguments& a) {
+  render::PictureOptions o;
+  if (a.width < 16 || a.width > 20000) throw BadPlotInput(fmt::format("--width {} is outside [16, 20000]", a.width));
+  const auto coloring = render::parse_disk_coloring(a.color);
+  if (!coloring) throw BadPlotInput(fmt::format("--color {} is not one of direction, speed, field, none", a.color));
+  const auto& names = render::cell_field_names();
+  if (std::find(names.begin(), names.end(), a.field) == names.end()) {
+    throw BadPlotInput(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
+  }
+  if (!a.cells.empty() && (a.cells[0] < 1 || a.cells[1] < 1 || a.cells[0] > 4096 || a.cells[1] > 4096)) {
+    throw BadPlotInput(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
+  }
+  if (!(a.min_radius >= 0.0 && a.min_radius <= 10.0)) throw BadPlotInput(fmt::format("--min-radius {} is outside [0, 10]", a.min_radius));
+  o.width_px = a.width;
+  o.coloring = *coloring;
+  o.field = a.field;
+  if (!a.cells.empty()) {
+    o.cells_x = a.cells[0];
+    o.cells_y = a.cells[1];
+  }
+  o.arrows = !a.no_arrows;
+  o.subtract_shear_profile = a.relative;
+  o.legend = !a.no_legend;
+  o.min_disk_radius_px = a.min_radius;
+  return o;
+}
+
+int plot_config(const PictureArguments& a) {
+  const render::PictureOptions options = picture_options(a);
+  const std::string snapshots = locate_run_file(a.input, "snapshots.h5");
+  const std::int64_t frame = resolve_frame(a.frame, read_snapshot(snapshots, 0).frames);
+  const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
+  render::write_png(render_snapshot_picture(read_snapshot(snapshots, frame), options), out);
+  fmt::print("wrote {} (frame {})\n", out, frame);
+  return 0;
+}
+
+struct ScratchFolder {
+  std::filesystem::path path;
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+struct MovieArguments {
+  PictureArguments picture;
+  double fps = 10.0;
+};
+
+int plot_movie(const MovieArguments& m) {
+  const render::PictureOptions options = picture_options(m.picture);
+  if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw BadPlotInput(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
+  const std::string snapshots = locate_run_file(m.picture.input, "snapshots.h5");
+  const std::int64_t frames = read_snapshot(snapshots, 0).frames;
+  const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
+  // Frames go to a scratch folder beside the output, removed whatever happens.
+  const std::filesystem::path scratch = out + ".frames";
+  std::filesystem::remove_all(scratch);
+  std::filesystem::create_directories(scratch);
+  const ScratchFolder cleanup{scratch};
+  for (std::int64_t k = 0; k < frames; ++k) {
+    render::write_png(render_snapshot_picture(read_snapshot(snapshots, k), options),
+                      (scratch / fmt::format("frame_{:06d}.png", k)).string());
+  }
+  // H.264 needs even dimensions: pad by one white pixel where needed.
+  const std::string partial = out + ".partial";
+  const int status = run_program({"ffmpeg", "-loglevel", "error", "-y", "-framerate", fmt::format("{}", m.fps), "-i",
+                                  (scratch / "frame_%06d.png").string(), "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
+                                  "-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mp4", partial});
+  if (status != 0) {
+    std::filesystem::remove(partial);
+    throw std::runtime_error(status == 127 ? "ffmpeg was not found (install Debian's ffmpeg)"
+                                           : fmt::format("ffmpeg failed with exit code {}", status));
+  }
+  std::filesystem::rename(partial, out);
+  fmt::print("wrote {} ({} frames at {} per second)\n", out, frames, m.fps);
+  return 0;
+}
+
+}  // namespace
+
+void add_plot_picture_commands(CLI::App& plot) {
+  auto config = std::make_shared<PictureArguments>();
+  CLI::App* c = plot.add_subcommand(
+      "config", "Particle configuration, disks to scale, coloured by velocity direction, speed or a cell field, with the "
+                "coarse-grained velocity field as arrows (thesis Figs 2.2, 2.3, 3.4, 3.10)");
+  add_picture_options(c, *config);
+  c->add_option("--frame", config->frame, "Snapshot index (negative counts from the end)")->capture_default_str();
+  c->add_option("--out", config->out, "PNG file (default: configuration.png beside the input)");
+  c->callback([config] { finish_plot_command("config", [&] { return plot_config(*config); }); });
+
+  auto movie = std::make_shared<MovieArguments>();
+  movie->picture.width = 800;
+  CLI::App* m = plot.add_subcommand("movie", "An mp4 movie of a run, one configuration picture per snapshot (needs ffmpeg)");
+  add_picture_options(m, movie->picture);
+  m->add_option("--fps", movie->fps, "Frames per second, 0.1 … 120")->capture_default_str();
+  m->add_option("--out", movie->picture.out, "mp4 file (default: movie.mp4 beside the input)");
+  m->callback([movie] { finish_plot_command("movie", [&] { return plot_movie(*movie); }); });
+}
+
+}  // namespace granule::app

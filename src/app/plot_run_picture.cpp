@@ -1,0 +1,21 @@
+#include "app/plot_run_picture.hpp"
+
+namespace granule::app {
+
+render::RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const render::PictureOptions& options) {
+  const SystemParams& s = snapshot.metadata.system;
+  const ShearFrame box{s.length_x, s.length_y, snapshot.metadata.boundary == "lees-edwards" ? s.shear_velocity : 0.0};
+  return render::render_configuration({snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset}, options);
+}
+
+std::string render_run_picture(const std::string& out_dir) {
+  const SnapshotRead last = read_snapshot(out_dir + "/snapshots.h5", -1);
+  render::PictureOptions options;
+  // In a sheared box the mean flow dominates the lab velocities: the structure is in the rest.
+  options.subtract_shear_profile = last.metadata.boundary == "lees-edwards";
+  const std::string path = out_dir + "/configuration.png";
+  render::write_png(render_snapshot_picture(last, options), path);
+  return path;
+}
+
+}  // namespace granule::app

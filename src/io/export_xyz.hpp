@@ -1,0 +1,30 @@
+// Extended XYZ frames for OVITO (and ASE): one block per frame,
+//   N
+//   Lattice="L_x 0 0 0 L_y 0 0 0 1" Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 Time=t ...
+//   D x y 0 v_x v_y 0 σ/2
+// The comment line also records c (collisions_per_particle), the boundary and, for Lees–Edwards,
+// the image offset Δ (shear_offset) and U (shear_velocity): OVITO's box is plainly periodic.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "engine/system_params.hpp"
+
+namespace granule {
+
+struct XyzFrameInfo {
+  double diameter = 0.0;
+  double length_x = 1.0;
+  double length_y = 1.0;
+  double time = 0.0;
+  double collisions_per_particle = 0.0;
+  std::string boundary = "periodic";
+  double shear_velocity = 0.0;
+  double shear_offset = 0.0;
+};
+
+// Appends one frame (full double precision) to `out`.
+void write_xyz_frame(std::ostream& out, const ParticleState& particles, const XyzFrameInfo& info);
+
+}  // namespace granule

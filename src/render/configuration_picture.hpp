@@ -1,0 +1,59 @@
+// Pictures of a particle configuration (thesis Figs 2.2, 2.3, 3.4, 3.10): every disk drawn to scale
+// in the box (y up), coloured by the direction of its velocity (the hue wheel of Fig 1.1's inset),
+// by its speed or by a coarse-grained cell field, with the coarse-grained velocity field V(r) of
+// §1.4.3 drawn as arrows from the cell centres.  Disks crossing the box edges are drawn with their
+// periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/cell_fields.hpp"
+#include "analysis/field_grid.hpp"
+#include "boundary/shear_frame.hpp"
+#include "engine/system_params.hpp"
+#include "render/raster_image.hpp"
+
+namespace granule::render {
+
+enum class DiskColoring { kDirection, kSpeed, kField, kNone };
+
+// "direction", "speed", "field", "none".
+std::optional<DiskColoring> parse_disk_coloring(std::string_view name);
+
+// The cell fields a picture can colour by ("density", "temperature", ...); nullptr if unknown.
+const std::vector<double>* cell_field_by_name(const CellFields& fields, std::string_view name);
+const std::vector<std::string>& cell_field_names();
+
+struct ConfigurationScene {
+  const ParticleState& particles;  // lab frame, inside the box
+  double diameter = 0.0;           // σ
+  ShearFrame frame;                // box and Lees–Edwards shear velocity U
+  double shear_offset = 0.0;       // Lees–Edwards image offset Δ ∈ [0, L_x)
+};
+
+struct PictureOptions {
+  int width_px = 1000;  // the height follows the box's aspect ratio
+  DiskColoring coloring = DiskColoring::kDirection;
+  std::string field = "density";  // the cell field of DiskColoring::kField
+  // Lees–Edwards: colours and arrows from the velocity relative to the mean flow u(y) = γ (y − L_y/2).
+  bool subtract_shear_profile = false;
+  bool arrows = true;
+  int cells_x = 0;  // coarse-graining grid of the arrows and field colours; 0: automatic
+  int cells_y = 0;
+  bool legend = true;
+  // Disks smaller than this radius on screen are drawn at it, so that dilute systems of 10^6
+  // disks (σ well below a pixel) stay visible.
+  double min_disk_radius_px = 0.6;
+};
+
+// The automatic coarse-graining grid: about 40 disks per cell, between 4 and 64 cells a side
+// (32 × 32 for the thesis's N = 40000, as in Figs 2.2–2.3).
+FieldGrid automatic_picture_grid(std::int64_t particles, double length_x, double length_y);
+
+// Throws std::invalid_argument for an unknown field name or a width outside [16, 20000].
+RasterImage render_configuration(const ConfigurationScene& scene, const PictureOptions& options);
+
+}  // namespace granule::render

@@ -1,0 +1,21 @@
+// Legends drawn into a configuration picture (cairo, device units = pixels): the hue wheel of
+// velocity directions (as the inset of thesis Fig 1.1) and a colour bar with its range.
+#pragma once
+
+#include <cairo.h>
+
+#include <functional>
+
+#include "render/color_scales.hpp"
+
+namespace granule::render {
+
+// A wheel of radius `radius` centred at (cx, cy): the colour at angle θ (counter-clockwise from +x,
+// picture y up) is the colour of a disk moving in direction θ.
+void draw_direction_wheel(cairo_t* cr, double cx, double cy, double radius);
+
+// A horizontal bar whose left end is `low` and right end `high`, labelled with both values.
+void draw_color_bar(cairo_t* cr, double x, double y, double width, double height, double low, double high,
+                    const char* label, const std::function<Rgb(double)>& scale);
+
+}  // namespace granule::render

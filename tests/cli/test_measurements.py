@@ -1,0 +1,104 @@
+"""End-to-end: the fields and collision statistics of a run (fields.h5, collisions.h5, CSV tables)
+read back with h5py/csv and checked against each other and against `granule analyze fields` on the
+run's own snapshots; bad measurement settings are rejected with exit code 2 and no output."""
+import csv
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
+shutil.rmtree(WORK, ignore_errors=True)
+WORK.mkdir(parents=True)
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def granule(*args):
+    return subprocess.run([GRANULE, *args], capture_output=True, text=True, timeout=300)
+
+
+N = 1500
+out = WORK / "run"
+result = granule("run", "--out", str(out), "--set", f"system.particles={N}", "--set", "system.restitution=0.9",
+                 "--set", "boundary.kind=\"lees-edwards\"", "--set", "boundary.shear_velocity=10",
+                 "--set", "initial.equilibrate=2", "--set", "run.until_collisions_per_particle=8",
+                 "--set", "output.snapshot_every_collisions_per_particle=2", "--set", "fields.cells=[6, 8]",
+                 "--set", "collisions.density_windows=[[0, 1500], [1500, 1e9]]",
+                 "--set", "collisions.from_collisions_per_particle=1")
+check(result.returncode == 0, f"run failed: {result.stderr}")
+
+with h5py.File(out / "fields.h5") as f, h5py.File(out / "snapshots.h5") as snaps:
+    check(f.attrs["format"] == b"granule-fields", "fields.h5 format attribute")
+    check((f.attrs["nx"], f.attrs["ny"]) == (6, 8), "fields grid")
+    c = f["frames/c"][:]
+    check(np.allclose(c, [0, 2, 4, 6, 8]), f"fields frames go with the snapshots: {c}")
+    check(f["instant/density"].shape == (5, 8, 6), f"field shape {f['instant/density'].shape}")
+    for k in range(5):
+        check(np.isclose(f["instant/count"][k].sum(), N), f"frame {k}: cell counts sum to N")
+    # Interval averages: the collisional stress is positive-definite in trace, the total is kinetic + collisional.
+    pc = f["average/pressure_collisional"][1:]
+    check((pc >= 0).all() and pc.sum() > 0, "collisional pressure non-negative and present")
+    total = f["average/total_xy"][1:]
+    check(np.allclose(total, f["average/kinetic_xy"][1:] + f["average/collisional_xy"][1:]), "total stress (1.7)")
+    check(f["average/collisional_xy"][1:].sum() < 0, "collisional shear stress is negative for positive shear")
+    prof = f["profiles/velocity_x"][-1]
+    y = f["profiles/y"][:]
+    slope = np.polyfit(y, prof, 1)[0]
+    check(abs(slope / 10.0 - 1.0) < 0.25, f"V_x(y) slope {slope} against γ = 10")
+    instant_density = f["instant/density"][:]
+    instant_temperature = f["instant/temperature"][:]
+
+# The same fields from the snapshots, computed afterwards, equal the ones measured during the run.
+result = granule("analyze", "fields", str(out / "snapshots.h5"), "--cells", "6,8", "--out", str(WORK / "fs.h5"))
+check(result.returncode == 0, f"analyze fields failed: {result.stderr}")
+with h5py.File(WORK / "fs.h5") as f:
+    check(np.allclose(f["instant/density"][:], instant_density, rtol=0, atol=1e-9), "analyze fields: density")
+    check(np.allclose(f["instant/temperature"][:], instant_temperature, rtol=1e-9, atol=1e-12), "analyze fields: T")
+    check(list(f["average/configurations"][:]) == [1, 2, 3, 4, 5], "running average over frames")
+    check("collisional_xx" not in f["average"], "no collisional stress without collisions")
+
+with h5py.File(out / "collisions.h5") as f:
+    check(f.attrs["format"] == b"granule-collisions", "collisions.h5 format")
+    check(abs(f.attrs["from_c"] - 1.0) < 1e-9, "measurement window start recorded")
+    b = f["impact_parameters"]
+    windows = b["windows/collisions"][:]
+    check(len(windows) == 7 and (windows == N).all(), f"impact windows of N collisions: {windows}")
+    total = b["total/counts"][:]
+    check(total.sum() == 7 * N, f"every collision of the 7 windows counted once: {total.sum()}")
+    split = b["density_window_0/counts"][:].sum() + b["density_window_1/counts"][:].sum()
+    check(split == total.sum(), "two complementary density windows split the collisions")
+    p = f["free_paths/total"]
+    check(p.attrs["paths"] > 10 * N, "free paths recorded")
+    check(p["counts"].shape == (100, 72), "free path histogram shape")
+    check(abs(p.attrs["l0_matched"] - 2 * p.attrs["mean_length"]) < 1e-12, "matched l0 is twice the mean path")
+
+rows = list(csv.DictReader(open(out / "free_paths.csv")))
+check(len(rows) == 100 and "P_matched_eq_3_36" in rows[0], "free_paths.csv")
+rows = list(csv.DictReader(open(out / "impact_parameters.csv")))
+check(len(rows) == 50 and "beta_rho1" in rows[0], "impact_parameters.csv")
+summary = json.load(open(out / "summary.json"))
+check("free_paths" in summary["measurements"], "summary.json carries the measurement figures")
+
+# Bad input: clear error naming the key, exit code 2, nothing written.
+bad = WORK / "bad"
+result = granule("run", "--out", str(bad), "--set", "collisions.density_windows=[[2, 1]]")
+check(result.returncode == 2 and "collisions.density_windows" in result.stderr, f"bad window: {result.stderr}")
+check(not bad.exists(), "nothing written for a bad config")
+result = granule("run", "--out", str(bad), "--set", "fields.enabled=3")
+check(result.returncode == 2 and "fields.enabled" in result.stderr, f"bad boolean: {result.stderr}")
+result = granule("analyze", "fields", str(out / "snapshots.h5"), "--cells", "0,3", "--out", str(WORK / "x.h5"))
+check(result.returncode == 2 and "--cells" in result.stderr and not (WORK / "x.h5").exists(), "bad --cells")
+
+print(f"{(0 if failures else 1)} passed, {len(failures)} failed")
+for message in failures:
+    print("FAIL:", message)
+sys.exit(1 if failures else 0)
