@@ -37,9 +37,7 @@ FreePathStatistics::FreePathStatistics(std::int64_t particles, FreePathSettings 
       length_{0.0, settings_.max_length, settings_.length_bins},
       angle_{0.0, 2.0 * std::numbers::pi, settings_.angle_bins},
       density_(density),
-      last_time_(static_cast<std::size_t>(particles), std::numeric_limits<double>::quiet_NaN()),
-      last_vx_(static_cast<std::size_t>(particles)),
-      last_vy_(static_cast<std::size_t>(particles)),
+      last_(static_cast<std::size_t>(particles), LastCollision{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}),
       total_(empty_histogram(settings_)),
       by_density_(settings_.density_windows.size(), empty_histogram(settings_)),
       by_speed_(settings_.speed_windows.size(), empty_histogram(settings_)) {}
@@ -51,10 +49,10 @@ void FreePathStatistics::on_collision(const CollisionRecord& r) {
 
 void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, Vec2 velocity_after) {
   const auto i = static_cast<std::size_t>(disk);
-  const double t_prev = last_time_[i];
-  if (recording_ && !std::isnan(t_prev)) {
-    const double dt = time - t_prev;
-    const Vec2 v{last_vx_[i], last_vy_[i]};
+  LastCollision& last = last_[i];
+  if (recording_ && !std::isnan(last.t)) {
+    const double dt = time - last.t;
+    const Vec2 v{last.vx, last.vy};
     const double speed = std::hypot(v.x, v.y);
     const double length = speed * dt;
     double alpha = std::atan2(v.y, v.x);
@@ -72,9 +70,7 @@ void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, V
       if (settings_.speed_windows[w].contains(speed)) add(by_speed_[w], l, a, settings_.angle_bins, length, speed);
     }
   }
-  last_time_[i] = time;
-  last_vx_[i] = velocity_after.x;
-  last_vy_[i] = velocity_after.y;
+  last = {time, velocity_after.x, velocity_after.y};
 }
 
 }  // namespace granule

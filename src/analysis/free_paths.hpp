@@ -62,8 +62,12 @@ class FreePathStatistics final : public EventObserver {
   UniformBins length_, angle_;
   const LocalDensity* density_;
   bool recording_ = false;
-  std::vector<double> last_time_;  // NaN until the disk's first collision is seen
-  std::vector<double> last_vx_, last_vy_;
+  // Each disk's last collision: one record per disk so that a collision touches one cache line
+  // per disk.  t is NaN until the disk's first collision is seen.
+  struct LastCollision {
+    double t, vx, vy;
+  };
+  std::vector<LastCollision> last_;
   PathHistogram total_;
   std::vector<PathHistogram> by_density_, by_speed_;
 };

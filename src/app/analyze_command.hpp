@@ -10,5 +10,6 @@ void add_analyze_command(CLI::App& root);
 
 // One per analysis (src/app/analyze_*.cpp).
 void add_analyze_fields(CLI::App& analyze);
+void add_analyze_spectra(CLI::App& analyze);
 
 }  // namespace granule::app

@@ -9,9 +9,13 @@
 #include <limits>
 #include <memory>
 
+#include "analysis/collisional_stress.hpp"
+#include "analysis/free_paths.hpp"
+#include "analysis/impact_parameters.hpp"
 #include "cells/cell_grid.hpp"
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"
+#include "observers/global_diagnostics.hpp"
 #include "theory/steady_shear.hpp"
 
 namespace granule::app {
@@ -30,9 +34,16 @@ struct BenchOptions {
   double collisions_per_particle = 20.0;
   double particles_per_cell = 1.0;
   std::uint64_t seed = 7;
+  bool observers = false;
 };
 
-void run_workload(const Workload& w, const BenchOptions& o) {
+// The measurements a run makes by default, added one at a time (observer_cost below).
+enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePaths };
+
+// Times `o.collisions_per_particle` after the untimed start, in chunks of one collision per particle;
+// at each chunk the run loop's O(N) work of the chosen measurements (diagnostics sample, density
+// refresh) is done as in `granule run`.
+void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
   SystemParams p;
   p.particles = o.particles;
   p.length_x = p.length_y = 1.0;
@@ -58,12 +69,30 @@ void run_workload(const Workload& w, const BenchOptions& o) {
   sim.start_production(w.restitution);
   sim.synchronize();
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
+  const FieldGrid cells{std::max(1, static_cast<int>(std::sqrt(static_cast<double>(p.particles) / 20.0))),
+                        std::max(1, static_cast<int>(std::sqrt(static_cast<double>(p.particles) / 20.0))), 1.0, 1.0};
+  GlobalDiagnostics diagnostics(p, cells.nx, cells.ny);
+  CollisionalStressField stress(cells, p.diameter);
+  LocalDensity density(cells);
+  ImpactParameterStatistics impacts(p.diameter, 50, p.particles, {}, &density);
+  FreePathStatistics paths(p.particles, FreePathSettings{}, &density);
+  paths.start();
+  const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
+  if (at_least(Measurements::kDiagnostics)) sim.add_observer(&diagnostics);
+  if (at_least(Measurements::kStressField)) sim.add_observer(&stress);
+  if (at_least(Measurements::kImpacts)) sim.add_observer(&impacts);
+  if (at_least(Measurements::kFreePaths)) sim.add_observer(&paths);
   const auto start = std::chrono::steady_clock::now();
-  sim.run(std::numeric_limits<double>::infinity(), target);
+  while (sim.collisions() < target) {
+    sim.run(std::numeric_limits<double>::infinity(), std::min<std::int64_t>(target, sim.collisions() + p.particles));
+    if (at_least(Measurements::kDiagnostics)) diagnostics.sample(sim.state(), sim.time(), sim.collisions());
+    if (at_least(Measurements::kImpacts)) density.update(sim.state());
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fmt::print("{:<28} {:>8} {:>6.3g} {:>5.3g} {:>11} {:>8.3f} {:>13.4g} {:>12.4g} {:>9.1f}\n", w.name, p.particles,
+  static const char* const kMeasured[] = {"", " +diagnostics", " +stress field", " +impacts", " +free paths"};
+  fmt::print("{:<28} {:>8} {:>6.3g} {:>5.3g} {:>11} {:>8.3f} {:>13.4g} {:>12.4g} {:>9.1f}{}\n", w.name, p.particles,
              w.area_fraction, w.restitution, sim.collisions(), seconds, static_cast<double>(sim.collisions()) / seconds,
-             static_cast<double>(sim.events()) / seconds, sim.bytes_per_particle());
+             static_cast<double>(sim.events()) / seconds, sim.bytes_per_particle(), kMeasured[static_cast<int>(measure)]);
 }
 
 }  // namespace
@@ -80,6 +109,9 @@ void add_bench_command(CLI::App& root) {
       ->default_val(1.0)
       ->check(CLI::Range(0.1, 20.0));
   command->add_option("--seed", options->seed, "Seed of the initial states")->default_val(7);
+  command->add_flag("--observers", options->observers,
+                    "Also time the free-cooling and Lees–Edwards workloads with the default measurements of a run "
+                    "added one at a time (their cost)");
   command->callback([options] {
     fmt::print("{:<28} {:>8} {:>6} {:>5} {:>11} {:>8} {:>13} {:>12} {:>9}\n", "workload", "N", "nu", "e", "collisions",
                "seconds", "collisions/s", "events/s", "bytes/N");
@@ -90,6 +122,13 @@ void add_bench_command(CLI::App& root) {
         {"Lees-Edwards e=0.8, nu=0.05", 0.05, 0.8, true},
     };
     for (const Workload& w : workloads) run_workload(w, *options);
+    if (!options->observers) return;
+    for (const Workload& w : {workloads[2], workloads[3]}) {
+      for (Measurements m : {Measurements::kDiagnostics, Measurements::kStressField, Measurements::kImpacts,
+                             Measurements::kFreePaths}) {
+        run_workload(w, *options, m);
+      }
+    }
   });
 }
 

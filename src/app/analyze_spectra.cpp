@@ -1,0 +1,314 @@
+// `granule analyze spectra SNAPSHOTS.h5`: Fourier spectra of the mass and momentum densities of
+// each chosen frame (thesis §2.2, §3.2.1): the 2D power maps R, P_x, P_y, P, their annulus integrals
+// against |k|, and the dominant wavevector against L0 = l/√(1−ẽ²) (1.1).  Schema: docs/spectra.md.
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/analyze_command.hpp"
+#include "granule/version.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_util.hpp"
+#include "io/snapshot_file.hpp"
+#include "spectra/dominant_mode.hpp"
+#include "spectra/power_spectra.hpp"
+
+namespace granule::app {
+
+namespace {
+
+using namespace granule::spectra;
+
+constexpr int kExitBadInput = 2;
+constexpr int kMaxModeLimit = 2048;
+constexpr const char* kFormat = "granule-spectra";
+constexpr int kFormatVersion = 1;
+
+struct SpectraOptions {
+  std::string snapshots;
+  std::string frames = "all";
+  int max_mode = 64;
+  std::optional<double> dk;
+  std::string method = "fast";
+  bool subtract_shear = false;
+  bool exclude_ky_axis = false;
+  std::string out = "spectra.h5";
+  std::string csv;
+};
+
+// "all", or comma-separated items: an index (negative counts from the end) or a Python-style slice
+// start:stop[:step] with optional parts.  Returns the frame indices, or an error message.
+std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t total, std::string& error) {
+  std::vector<std::int64_t> frames;
+  const auto resolve = [&](std::int64_t i) { return i < 0 ? total + i : i; };
+  std::size_t start = 0;
+  while (error.empty() && start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    const std::string item = spec.substr(start, comma - start);
+    start = comma + 1;
+    try {
+      if (item == "all") {
+        for (std::int64_t i = 0; i < total; ++i) frames.push_back(i);
+      } else if (item.find(':') == std::string::npos) {
+        std::size_t used = 0;
+        const std::int64_t i = resolve(std::stoll(item, &used));
+        if (used != item.size() || i < 0 || i >= total) throw std::out_of_range(item);
+        frames.push_back(i);
+      } else {
+        std::vector<std::string> parts;
+        for (std::size_t p = 0, colon = 0; colon != std::string::npos; p = colon + 1) {
+          colon = item.find(':', p);
+          parts.push_back(item.substr(p, colon == std::string::npos ? std::string::npos : colon - p));
+        }
+        if (parts.size() > 3) throw std::invalid_argument(item);
+        const std::int64_t step = parts.size() == 3 && !parts[2].empty() ? std::stoll(parts[2]) : 1;
+        if (step <= 0) throw std::invalid_argument(item);
+        const std::int64_t first = parts[0].empty() ? 0 : std::clamp<std::int64_t>(resolve(std::stoll(parts[0])), 0, total);
+        const std::int64_t last = parts[1].empty() ? total : std::clamp<std::int64_t>(resolve(std::stoll(parts[1])), 0, total);
+        for (std::int64_t i = first; i < last; i += step) frames.push_back(i);
+      }
+    } catch (const std::exception&) {
+      error = fmt::format("--frames: '{}' is not a frame index in [-{}, {}) or a slice start:stop[:step] (step > 0)",
+                          item, total, total);
+    }
+  }
+  if (error.empty() && frames.empty()) error = fmt::format("--frames '{}' selects no frame (the file has {})", spec, total);
+  return frames;
+}
+
+// The four spectra, in output order: name in the file, and the map of PowerMaps it comes from.
+struct FieldChoice {
+  const char* name;
+  const std::vector<double> PowerMaps::*map;
+  const std::vector<double> AnnulusSpectrum::*annulus;
+};
+constexpr FieldChoice kFields[] = {{"R", &PowerMaps::density, &AnnulusSpectrum::density},
+                                   {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x},
+                                   {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y},
+                                   {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum}};
+
+class SpectraFile {
+ public:
+  SpectraFile(const std::string& path, const SpectraOptions& options, const SnapshotMetadata& metadata,
+              const TransformOptions& transform, double dk, const AnnulusSpectrum& bins)
+      : partial_(path + ".partial") {
+    using namespace h5;
+    file_ = check_id(H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial_);
+    try {
+      write_layout(options, metadata, transform, dk, bins);
+    } catch (...) {  // no destructor runs for a half-constructed object: clean up here
+      H5Fclose(file_);
+      std::filesystem::remove(partial_);
+      throw;
+    }
+  }
+  ~SpectraFile() {
+    if (file_ >= 0) H5Fclose(file_);
+    if (!finished_) std::filesystem::remove(partial_);
+  }
+  SpectraFile(const SpectraFile&) = delete;
+  SpectraFile& operator=(const SpectraFile&) = delete;
+
+  // Root attributes (parameters of the analysis and of the run) and the empty per-frame datasets.
+  void write_layout(const SpectraOptions& options, const SnapshotMetadata& metadata, const TransformOptions& transform,
+                    double dk, const AnnulusSpectrum& bins) {
+    using namespace h5;
+    const SystemParams& s = metadata.system;
+    write_string_attribute(file_, "format", kFormat);
+    write_attribute(file_, "format_version", H5T_NATIVE_INT, &kFormatVersion);
+    write_string_attribute(file_, "granule_version", kVersion);
+    write_string_attribute(file_, "source", std::filesystem::absolute(options.snapshots).string());
+    write_string_attribute(file_, "method", options.method);
+    write_attribute(file_, "max_mode", H5T_NATIVE_INT, &transform.max_mode);
+    write_attribute(file_, "dk", H5T_NATIVE_DOUBLE, &dk);
+    const int subtract = options.subtract_shear ? 1 : 0, exclude = options.exclude_ky_axis ? 1 : 0;
+    write_attribute(file_, "subtract_shear_profile", H5T_NATIVE_INT, &subtract);
+    write_attribute(file_, "exclude_ky_axis_from_Px", H5T_NATIVE_INT, &exclude);
+    const int grid = fft_grid_size(transform.max_mode, transform.gridding);
+    write_attribute(file_, "kernel_width", H5T_NATIVE_INT, &transform.gridding.kernel_width);
+    write_attribute(file_, "fft_grid", H5T_NATIVE_INT, &grid);
+    write_string_attribute(file_, "normalization", "rho(k) = (1/2pi) sum_j exp(i k.r_j), p(k) = (1/2pi) sum_j v_j exp(i k.r_j) (thesis 3.4-3.5)");
+    write_attribute(file_, "particles", H5T_NATIVE_INT64, &s.particles);
+    write_attribute(file_, "diameter", H5T_NATIVE_DOUBLE, &s.diameter);
+    const double box[2] = {s.length_x, s.length_y};
+    write_attribute(file_, "box", H5T_NATIVE_DOUBLE, box, 2);
+    write_attribute(file_, "area_fraction", H5T_NATIVE_DOUBLE, &metadata.area_fraction);
+    write_attribute(file_, "restitution", H5T_NATIVE_DOUBLE, &s.restitution);
+    write_string_attribute(file_, "boundary", metadata.boundary);
+    write_attribute(file_, "shear_velocity", H5T_NATIVE_DOUBLE, &s.shear_velocity);
+    const double l = mean_free_path(s), l0 = cluster_length(s);
+    write_attribute(file_, "mean_free_path", H5T_NATIVE_DOUBLE, &l);
+    write_attribute(file_, "L0", H5T_NATIVE_DOUBLE, &l0);
+
+    const auto side = static_cast<hsize_t>(2 * transform.max_mode + 1);
+    const auto rings = static_cast<hsize_t>(bins.k.size());
+    write_dataset(file_, "annulus_k", {rings}, bins.k);
+    for (const char* name : {"frame_index", "collisions_per_particle", "time", "shear_offset", "tilt"}) {
+      H5Dclose(create_frames(file_, name, std::string(name) == "frame_index" ? H5T_STD_I64LE : H5T_IEEE_F64LE, {}));
+    }
+    H5Dclose(create_frames(file_, "kx", H5T_IEEE_F64LE, {side, side}));
+    H5Dclose(create_frames(file_, "ky", H5T_IEEE_F64LE, {side, side}));
+    H5Dclose(create_frames(file_, "annulus_modes", H5T_STD_I64LE, {rings}));
+    H5Gclose(create_group(file_, "dominant"));
+    for (const FieldChoice& field : kFields) {
+      H5Dclose(create_frames(file_, field.name, H5T_IEEE_F64LE, {side, side}));
+      H5Dclose(create_frames(file_, (std::string("annulus_") + field.name).c_str(), H5T_IEEE_F64LE, {rings}));
+      const std::string group = std::string("dominant/") + field.name;
+      H5Gclose(create_group(file_, group.c_str()));
+      for (const char* column : {"l", "m"}) H5Dclose(create_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {}));
+      for (const char* column : {"kx", "ky", "k", "angle_deg", "length", "power", "length_over_L0"}) {
+        H5Dclose(create_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {}));
+      }
+    }
+  }
+
+  void append(std::int64_t index, const SnapshotFrame& frame, const PowerMaps& maps, const AnnulusSpectrum& annulus,
+              const std::vector<DominantMode>& dominant, double l0) {
+    using namespace h5;
+    const hsize_t k = frames_++;
+    append_frame(file_, "frame_index", H5T_NATIVE_INT64, &index, k);
+    append_frame(file_, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
+    append_frame(file_, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
+    append_frame(file_, "shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset, k);
+    append_frame(file_, "tilt", H5T_NATIVE_DOUBLE, &maps.lattice.tilt, k);
+    append_frame(file_, "kx", H5T_NATIVE_DOUBLE, maps.kx.data(), k);
+    append_frame(file_, "ky", H5T_NATIVE_DOUBLE, maps.ky.data(), k);
+    append_frame(file_, "annulus_modes", H5T_NATIVE_INT64, annulus.modes.data(), k);
+    for (std::size_t f = 0; f < std::size(kFields); ++f) {
+      const FieldChoice& field = kFields[f];
+      append_frame(file_, field.name, H5T_NATIVE_DOUBLE, (maps.*field.map).data(), k);
+      append_frame(file_, (std::string("annulus_") + field.name).c_str(), H5T_NATIVE_DOUBLE, (annulus.*field.annulus).data(), k);
+      const std::string group = std::string("dominant/") + field.name + "/";
+      const DominantMode& d = dominant[f];
+      const double ratio = d.length / l0;
+      append_frame(file_, (group + "l").c_str(), H5T_NATIVE_INT, &d.l, k);
+      append_frame(file_, (group + "m").c_str(), H5T_NATIVE_INT, &d.m, k);
+      for (const auto& [column, value] : {std::pair{"kx", &d.kx}, {"ky", &d.ky}, {"k", &d.k}, {"angle_deg", &d.angle_deg},
+                                          {"length", &d.length}, {"power", &d.power}, {"length_over_L0", &ratio}}) {
+        append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
+      }
+    }
+  }
+  void finish(const std::string& path) {
+    h5::check(H5Fclose(file_), "closing " + partial_);
+    file_ = -1;
+    std::filesystem::rename(partial_, path);
+    finished_ = true;
+  }
+
+ private:
+  std::string partial_;
+  hid_t file_ = -1;
+  hsize_t frames_ = 0;
+  bool finished_ = false;
+};
+
+int bad_input(const std::string& message) {
+  fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
+  return kExitBadInput;
+}
+
+int analyze_spectra(const SpectraOptions& options) {
+  // 1. Everything that can be wrong with the input is found before anything is written.
+  if (options.max_mode < 1 || options.max_mode > kMaxModeLimit) {
+    return bad_input(fmt::format("--max-mode must be in [1, {}] (got {})", kMaxModeLimit, options.max_mode));
+  }
+  if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
+    return bad_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
+  }
+  if (options.method != "fast" && options.method != "exact") {
+    return bad_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
+  }
+  SnapshotRead first;
+  try {
+    first = read_snapshot(options.snapshots, 0);
+  } catch (const std::exception& error) {
+    return bad_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
+  }
+  std::string error;
+  const std::vector<std::int64_t> frames = parse_frames(options.frames, first.frames, error);
+  if (!error.empty()) return bad_input(error);
+  const SnapshotMetadata& metadata = first.metadata;
+  const ShearFrame box{metadata.system.length_x, metadata.system.length_y, metadata.system.shear_velocity};
+  if (options.subtract_shear && !box.sheared()) {
+    return bad_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
+  }
+  TransformOptions transform;
+  transform.max_mode = options.max_mode;
+  transform.method = options.method == "exact" ? SpectralMethod::exact : SpectralMethod::fast;
+  transform.subtract_shear_profile = options.subtract_shear;
+  const double dk = options.dk.value_or(default_annulus_width(lattice_for_frame(box, 0.0)));
+  const double radius = complete_radius_at_any_strain(box, options.max_mode);
+  const std::string csv_path = !options.csv.empty() ? options.csv
+                               : std::filesystem::path(options.out).replace_extension("").string() + "_dominant.csv";
+  const double l0 = cluster_length(metadata.system);
+
+  // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
+  try {
+    std::unique_ptr<SpectraFile> file;
+    std::string csv = "frame,t,c,shear_offset,field,l,m,kx,ky,k,angle_deg,length,power,length_over_L0\n";
+    for (const std::int64_t index : frames) {
+      const SnapshotRead snapshot = index == 0 ? first : read_snapshot(options.snapshots, index);
+      const SnapshotFrame& frame = snapshot.frame;
+      const PowerMaps maps = power_maps(transform_fields(frame.particles, box, frame.shear_offset, transform),
+                                        options.exclude_ky_axis);
+      const AnnulusSpectrum annulus = annulus_sums(maps, dk, radius);
+      if (!file) file = std::make_unique<SpectraFile>(options.out, options, metadata, transform, dk, annulus);
+      std::vector<DominantMode> dominant;
+      for (const FieldChoice& field : kFields) {
+        const DominantMode& d = dominant.emplace_back(dominant_mode(maps, maps.*field.map));
+        csv += fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
+                           index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name, d.l,
+                           d.m, d.kx, d.ky, d.k, d.angle_deg, d.length, d.power, d.length / l0);
+      }
+      file->append(index, frame, maps, annulus, dominant, l0);
+      fmt::print("frame {} (t = {:.6g}, c = {:.6g}): dominant R mode 2π/|k| = {:.4g} at {:.1f}°, {:.3g} L0\n", index,
+                 frame.clock.time, frame.collisions_per_particle, dominant[0].length, dominant[0].angle_deg,
+                 dominant[0].length / l0);
+    }
+    write_file_atomically(csv_path, csv);
+    file->finish(options.out);
+  } catch (const std::exception& failure) {
+    fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
+    return 1;
+  }
+  fmt::print("wrote {} and {}\n", options.out, csv_path);
+  return 0;
+}
+
+}  // namespace
+
+void add_analyze_spectra(CLI::App& analyze) {
+  auto options = std::make_shared<SpectraOptions>();
+  CLI::App* command = analyze.add_subcommand(
+      "spectra", "Fourier spectra of the mass and momentum densities (thesis §2.2, §3.2.1): power maps, annulus sums "
+                 "against |k| and the dominant wavevector against L0 = l/sqrt(1-e^2). Schema: docs/spectra.md");
+  command->add_option("snapshots", options->snapshots, "snapshots.h5 of a run")->required();
+  command->add_option("--frames", options->frames,
+                      "Frames: 'all', indices (negative from the end) and slices start:stop[:step], comma-separated")
+      ->default_val("all");
+  command->add_option("--max-mode", options->max_mode, "Modes |l|, |m| <= M of the allowed lattice k = l k1 + m k2")
+      ->default_val(64);
+  command->add_option("--dk", options->dk, "Annulus width (default 2*pi/max(Lx, Ly))");
+  command->add_option("--method", options->method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
+      ->default_val("fast");
+  command->add_flag("--subtract-shear", options->subtract_shear,
+                    "Momentum relative to the linear shear profile, p'(k) of (3.17) (Lees-Edwards runs)");
+  command->add_flag("--exclude-ky-axis", options->exclude_ky_axis,
+                    "Leave the k_y axis (l = 0) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
+  command->add_option("--out", options->out, "Output HDF5 file")->default_val("spectra.h5");
+  command->add_option("--csv", options->csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
+  command->callback([options] { throw CLI::RuntimeError(analyze_spectra(*options)); });
+}
+
+}  // namespace granule::app

@@ -1,0 +1,12 @@
+// The reference method: the sums of mode_sums.hpp evaluated term by term, cos and sin of k·r_j in
+// the lab frame for every particle and mode (cost N × (2M+1)²).  The fast method is tested against it.
+#pragma once
+
+#include "spectra/mode_sums.hpp"
+#include "spectra/reciprocal_lattice.hpp"
+
+namespace granule::spectra {
+
+std::vector<ModeValues> exact_mode_sums(const WeightedPoints& points, const ReciprocalLattice& lattice, int max_mode);
+
+}  // namespace granule::spectra

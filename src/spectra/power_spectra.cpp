@@ -1,0 +1,59 @@
+#include "spectra/power_spectra.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace granule::spectra {
+
+PowerMaps power_maps(const DensityMomentumTransforms& t, bool exclude_ky_axis_from_px) {
+  const std::size_t count = t.modes.count();
+  PowerMaps maps{t.lattice, t.modes, std::vector<double>(count), std::vector<double>(count), std::vector<double>(count),
+                 std::vector<double>(count), std::vector<double>(count), std::vector<double>(count)};
+  const int max_mode = t.modes.max_mode;
+  for (int m = -max_mode; m <= max_mode; ++m) {
+    for (int l = -max_mode; l <= max_mode; ++l) {
+      const std::size_t i = t.modes.index(l, m);
+      maps.kx[i] = t.lattice.kx(l);
+      maps.ky[i] = t.lattice.ky(l, m);
+      maps.density[i] = std::norm(t.density[i]);
+      maps.momentum_x[i] = exclude_ky_axis_from_px && l == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                                             : std::norm(t.momentum_x[i]);
+      maps.momentum_y[i] = std::norm(t.momentum_y[i]);
+      maps.momentum[i] = maps.momentum_x[i] + maps.momentum_y[i];
+    }
+  }
+  return maps;
+}
+
+AnnulusSpectrum annulus_sums(const PowerMaps& maps, double dk, double max_radius) {
+  AnnulusSpectrum out;
+  out.dk = dk;
+  const double radius = std::min(max_radius, maps.lattice.complete_radius(maps.modes.max_mode));
+  const auto bins = static_cast<std::size_t>(std::max(0.0, std::floor(radius / dk - 0.5)));  // b = 1 … bins
+  out.k.resize(bins);
+  for (std::size_t b = 0; b < bins; ++b) out.k[b] = static_cast<double>(b + 1) * dk;
+  out.modes.assign(bins, 0);
+  for (auto* sum : {&out.density, &out.momentum_x, &out.momentum_y, &out.momentum}) sum->assign(bins, 0.0);
+  const auto add = [](std::vector<double>& sum, std::size_t b, double power) {
+    if (!std::isnan(power)) sum[b] += power;
+  };
+  for (std::size_t i = 0; i < maps.modes.count(); ++i) {
+    const double b = std::floor(std::hypot(maps.kx[i], maps.ky[i]) / dk + 0.5);
+    if (b < 1.0 || b > static_cast<double>(bins)) continue;
+    const auto bin = static_cast<std::size_t>(b) - 1;
+    ++out.modes[bin];
+    add(out.density, bin, maps.density[i]);
+    add(out.momentum_x, bin, maps.momentum_x[i]);
+    add(out.momentum_y, bin, maps.momentum_y[i]);
+    add(out.momentum, bin, maps.momentum[i]);
+  }
+  return out;
+}
+
+double default_annulus_width(const ReciprocalLattice& lattice) {
+  return 2.0 * std::numbers::pi / std::max(lattice.length_x, lattice.length_y);
+}
+
+}  // namespace granule::spectra
