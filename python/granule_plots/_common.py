@@ -2,7 +2,8 @@
 
 Every script takes the input file first, then --out, --frame, --dpi; bad input exits with code 2
 and a message naming the option and its allowed range, writing nothing.  Figures have a fixed size
-in inches, so a picture is (width_in × dpi) × (height_in × dpi) pixels.
+in inches, so a picture is (width_in × dpi) × (height_in × dpi) pixels.  Scripts that draw curves of
+an analysis also take --data FILE: the numbers drawn, as JSON, so they can be checked or re-plotted.
 """
 import argparse
 import json
@@ -16,12 +17,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def parser(kind, description):
+def parser(kind, description, data=False):
     p = argparse.ArgumentParser(prog=f"granule plot {kind}", description=description)
     p.add_argument("input")
     p.add_argument("--out", required=True)
     p.add_argument("--frame", type=int, default=-1)
     p.add_argument("--dpi", type=int, default=100)
+    if data:
+        p.add_argument("--data", help="also write the numbers drawn, as JSON")
     return p
 
 
@@ -54,12 +57,33 @@ def figure(width_in, height_in):
     return plt.figure(figsize=(width_in, height_in), layout="constrained")
 
 
-def save(fig, out, dpi):
-    """Write the PNG atomically (temporary name, then rename) at exactly figsize × dpi pixels."""
-    partial = f"{out}.partial"
-    fig.savefig(partial, dpi=dpi, format="png")
+def _plain(value):
+    """JSON-ready: arrays to lists, NaN and ±inf (not JSON) to null."""
+    import numpy as np
+
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return [_plain(v) for v in value]
+    if isinstance(value, (float, np.floating)):
+        return float(value) if np.isfinite(value) else None
+    if isinstance(value, np.integer):
+        return int(value)
+    return value
+
+
+def save(fig, out, dpi, data=None, data_path=None):
+    """Write the PNG atomically (temporary name, then rename) at exactly figsize × dpi pixels, and
+    the numbers drawn (`data`) as JSON to `data_path` when it is given; both are renamed only once
+    both are complete."""
+    written = [(f"{out}.partial", out)]
+    fig.savefig(written[0][0], dpi=dpi, format="png")
     plt.close(fig)
-    os.replace(partial, out)
+    if data_path:
+        written.append((f"{data_path}.partial", data_path))
+        Path(written[1][0]).write_text(json.dumps(_plain(data)))
+    for partial, final in written:
+        os.replace(partial, final)
 
 
 def open_h5(kind, path):
@@ -70,3 +94,15 @@ def open_h5(kind, path):
         return h5py.File(path, "r")
     except OSError as error:
         fail(kind, f"cannot read {path} as HDF5: {error}")
+
+
+def require_format(kind, f, path, expected, producer):
+    """Exit 2 unless the HDF5 file's `format` attribute is `expected` (written by `producer`)."""
+    if text(f.attrs.get("format", "")) != expected:
+        fail(kind, f"{path} is not a {expected} file (written by `{producer}`)")
+
+
+def legend(ax):
+    """A small legend, only when something is labelled."""
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=7)

@@ -6,6 +6,7 @@ void add_analyze_command(CLI::App& root) {
   CLI::App* analyze = root.add_subcommand("analyze", "Measure from the saved outputs of a run (snapshots.h5)");
   analyze->require_subcommand(1);
   add_analyze_fields(*analyze);
+  add_analyze_collisions(*analyze);
   add_analyze_spectra(*analyze);
 }
 

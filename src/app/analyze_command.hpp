@@ -10,6 +10,7 @@ void add_analyze_command(CLI::App& root);
 
 // One per analysis (src/app/analyze_*.cpp).
 void add_analyze_fields(CLI::App& analyze);
+void add_analyze_collisions(CLI::App& analyze);
 void add_analyze_spectra(CLI::App& analyze);
 
 }  // namespace granule::app

@@ -1,5 +1,5 @@
-// `granule plot fields | timeseries | profiles | phase`: line plots and shaded maps drawn by the
-// matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3).
+// `granule plot fields | timeseries | profiles | phase | collisions | spectra`: line plots and shaded
+// maps drawn by the matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3).
 #include <fmt/format.h>
 
 #include <memory>
@@ -20,6 +20,8 @@ struct ScriptArguments {
   std::vector<std::string> quantities;
   std::string colormap = "gray";
   std::int64_t max_points = 200000;
+  std::string window = "total";
+  std::string data;
 };
 
 // One matplotlib kind: its script, the run file it reads and its default output name.
@@ -29,6 +31,8 @@ struct ScriptKind {
   const char* input_file;
   const char* output_file;
   const char* description;
+  bool has_frames;    // the input holds several frames (--frame)
+  bool writes_data;   // the script can also write the numbers drawn (--data FILE.json)
 };
 
 int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
@@ -44,6 +48,8 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
     }
   }
   if (std::string_view(kind.name) == "phase") arguments.insert(arguments.end(), {"--max-points", std::to_string(a.max_points)});
+  if (std::string_view(kind.name) == "collisions") arguments.insert(arguments.end(), {"--window", a.window});
+  if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
   const int status = run_plot_script(kind.script, arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
   return status;
@@ -52,13 +58,19 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
 constexpr ScriptKind kKinds[] = {
     {"fields", "fields", "fields.h5", "fields.png",
      "Shaded maps of density, temperature, kinetic and collisional pressure from fields.h5 "
-     "(thesis Figs 2.4, 2.12-2.18, 3.5-3.14)"},
+     "(thesis Figs 2.4, 2.12-2.18, 3.5-3.14)", true, false},
     {"timeseries", "timeseries", "timeseries.csv", "timeseries.png",
-     "Global diagnostics against c and t from timeseries.csv (thesis Figs 2.5-2.7, 3.6)"},
+     "Global diagnostics against c and t from timeseries.csv (thesis Figs 2.5-2.7, 3.6)", false, false},
     {"profiles", "profiles", "fields.h5", "profiles.png",
-     "Streamwise-averaged profiles V_x, V_y, density, T against y from fields.h5 (thesis Figs 3.15-3.16)"},
+     "Streamwise-averaged profiles V_x, V_y, density, T against y from fields.h5 (thesis Figs 3.15-3.16)", true, false},
     {"phase", "phase", "snapshots.h5", "phase.png",
-     "Phase-space scatter plots of one snapshot: x, y against v_x, v_y (thesis Figs 2.1, 2.11, 2.13)"},
+     "Phase-space scatter plots of one snapshot: x, y against v_x, v_y (thesis Figs 2.1, 2.11, 2.13)", true, false},
+    {"collisions", "collisions", "collisions.h5", "collisions.png",
+     "Impact-parameter and free-path distributions from collisions.h5 with the fits (3.24), (3.36) "
+     "(thesis Figs 2.16, 3.30-3.33)", false, true},
+    {"spectra", "spectra", "spectra.h5", "spectra.png",
+     "Annulus spectra R(k), P(k), power maps R, P_x, P_y and the dominant length from the spectra.h5 of "
+     "`granule analyze spectra` (thesis Figs 2.8-2.10, 3.21-3.27)", true, true},
 };
 
 }  // namespace
@@ -70,7 +82,7 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
     c->add_option("input", a->input, fmt::format("Run directory or {}", kind.input_file))->required();
     c->add_option("--out", a->out, fmt::format("PNG file (default: {} beside the input)", kind.output_file));
     c->add_option("--dpi", a->dpi, "Resolution, 20 … 600 dots per inch (the figure size in inches is fixed)")->capture_default_str();
-    if (std::string_view(kind.name) != "timeseries") {
+    if (kind.has_frames) {
       c->add_option("--frame", a->frame, "Frame index (negative counts from the end)")->capture_default_str();
     }
     if (std::string_view(kind.name) == "fields") {
@@ -83,6 +95,11 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
     if (std::string_view(kind.name) == "phase") {
       c->add_option("--max-points", a->max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
     }
+    if (std::string_view(kind.name) == "collisions") {
+      c->add_option("--window", a->window, "Free-path group: total, density_window_<i> or speed_window_<i>")
+          ->capture_default_str();
+    }
+    if (kind.writes_data) c->add_option("--data", a->data, "Also write the numbers drawn to this JSON file");
     c->callback([a, &kind] { finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); }); });
   }
 }
