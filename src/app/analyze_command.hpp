@@ -12,5 +12,6 @@ void add_analyze_command(CLI::App& root);
 void add_analyze_fields(CLI::App& analyze);
 void add_analyze_collisions(CLI::App& analyze);
 void add_analyze_spectra(CLI::App& analyze);
+void add_analyze_f1(CLI::App& analyze);
 
 }  // namespace granule::app

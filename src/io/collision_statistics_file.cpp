@@ -19,10 +19,6 @@ constexpr int kFormatVersion = 1;
 
 hsize_t size(std::size_t n) { return static_cast<hsize_t>(n); }
 
-void write_vector(hid_t group, const char* name, const std::vector<double>& v) { write_dataset(group, name, {size(v.size())}, v); }
-
-void write_double(hid_t object, const char* name, double value) { write_attribute(object, name, H5T_NATIVE_DOUBLE, &value); }
-
 std::vector<double> edges(const UniformBins& bins) {
   std::vector<double> out;
   for (int k = 0; k <= bins.bins; ++k) out.push_back(bins.edge(k));

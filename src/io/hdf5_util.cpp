@@ -99,6 +99,10 @@ void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>&
   check(status, name);
 }
 
+void write_vector(hid_t location, const char* name, const std::vector<double>& data) {
+  write_dataset(location, name, {static_cast<hsize_t>(data.size())}, data);
+}
+
 hid_t create_group(hid_t location, const char* name) {
   return check_id(H5Gcreate2(location, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name);
 }

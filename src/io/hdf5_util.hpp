@@ -14,6 +14,7 @@ hid_t check_id(hid_t id, const std::string& what);
 
 void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1);
 void write_string_attribute(hid_t object, const char* name, const std::string& value);
+inline void write_double(hid_t object, const char* name, double value) { write_attribute(object, name, H5T_NATIVE_DOUBLE, &value); }
 template <typename T>
 T read_attribute(hid_t object, const char* name, hid_t type) {
   T value{};
@@ -33,6 +34,7 @@ void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t fr
 
 // A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);
+void write_vector(hid_t location, const char* name, const std::vector<double>& data);
 hid_t create_group(hid_t location, const char* name);
 
 }  // namespace granule::h5

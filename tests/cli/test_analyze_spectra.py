@@ -4,28 +4,12 @@ and velocities (thesis (3.4), (3.5), (3.17) on the lattice (3.10)–(3.12)); bad
 writes nothing."""
 import csv
 import math
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-checks = {"passed": 0, "failed": 0}
-
-
-def check(condition, message):
-    checks["passed" if condition else "failed"] += 1
-    if not condition:
-        print("FAIL:", message)
-
-
-def granule(*args):
-    return subprocess.run([GRANULE, *args], capture_output=True, text=True, timeout=300)
+from harness import WORK, check, finish, granule
 
 
 def simulate(name, *settings):
@@ -128,5 +112,4 @@ for args, what in ((["--max-mode", "0"], "--max-mode"), (["--dk", "-1"], "--dk")
 result = granule("analyze", "spectra", str(WORK / "missing.h5"), "--out", str(WORK / "bad.h5"))
 check(result.returncode == 2, "missing snapshot file exits 2")
 
-print(f"{checks['passed']} passed, {checks['failed']} failed")
-sys.exit(1 if checks["failed"] else 0)
+finish()

@@ -3,27 +3,11 @@ read back with h5py/csv and checked against each other and against `granule anal
 run's own snapshots; bad measurement settings are rejected with exit code 2 and no output."""
 import csv
 import json
-import shutil
-import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import numpy as np
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-
-
-def granule(*args):
-    return subprocess.run([GRANULE, *args], capture_output=True, text=True, timeout=300)
+from harness import WORK, check, finish, granule
 
 
 N = 1500
@@ -117,7 +101,4 @@ check(result.returncode == 2 and "fields.enabled" in result.stderr, f"bad boolea
 result = granule("analyze", "fields", str(out / "snapshots.h5"), "--cells", "0,3", "--out", str(WORK / "x.h5"))
 check(result.returncode == 2 and "--cells" in result.stderr and not (WORK / "x.h5").exists(), "bad --cells")
 
-print(f"{(0 if failures else 1)} passed, {len(failures)} failed")
-for message in failures:
-    print("FAIL:", message)
-sys.exit(1 if failures else 0)
+finish()

@@ -9,30 +9,12 @@ N/4π² per mode of uncorrelated positions and the file's dominant mode.  Bad in
 naming the option, writing neither the PNG nor the sidecar."""
 import json
 import math
-import shutil
-import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import matplotlib.image
 import numpy as np
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-checks, failures = 0, []
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-
-
-def granule(*args):
-    return subprocess.run([GRANULE, *map(str, args)], capture_output=True, text=True, timeout=300)
+from harness import WORK, check, finish, granule
 
 
 def picture(path):
@@ -197,7 +179,4 @@ for name, (args, expected) in bad.items():
     check(not bad_png.exists() and not bad_json.exists(), f"{name}: output written")
     check(not any(WORK.glob("bad.*.partial")), f"{name}: partial output left")
 
-for message in failures:
-    print("FAIL:", message)
-print(f"{checks - len(failures)} passed, {len(failures)} failed")
-sys.exit(1 if failures else 0)
+finish()

@@ -4,9 +4,6 @@ ImageData and .pvd series read with VTK's Python module (Debian's python3-vtk9).
 from snapshots are checked against a numpy histogram of the positions; fields from a fields file
 round-trip exactly.  Bad input exits with code 2 and writes nothing."""
 import shlex
-import shutil
-import subprocess
-import sys
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
@@ -15,21 +12,7 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-checks, failures = 0, []
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-
-
-def granule(*args):
-    return subprocess.run([GRANULE, *map(str, args)], capture_output=True, text=True, timeout=300)
+from harness import WORK, check, finish, granule
 
 
 def read_vtk(reader_class, path):
@@ -143,7 +126,4 @@ for name, (args, expected) in bad.items():
     check(expected in r.stderr, f"{name}: message lacks '{expected}': {r.stderr.strip()}")
     check(not target.exists() and not Path(f"{target}.partial").exists(), f"{name}: output written")
 
-for f in failures:
-    print("FAIL:", f)
-print(f"{checks - len(failures)} passed, {len(failures)} failed")
-sys.exit(1 if failures else 0)
+finish()

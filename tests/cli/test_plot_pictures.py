@@ -3,31 +3,13 @@
 the configuration equals the area fraction; a shaded map is light where the field is high), the
 movie has one frame per snapshot (ffprobe), and bad input exits with code 2 writing nothing."""
 import json
-import math
-import shutil
 import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import matplotlib.image
 import numpy as np
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-checks, failures = 0, []
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-
-
-def granule(*args):
-    return subprocess.run([GRANULE, *map(str, args)], capture_output=True, text=True, timeout=300)
+from harness import WORK, check, finish, granule
 
 
 def picture(path):
@@ -147,7 +129,4 @@ for name, (args, expected) in bad.items():
     check(expected in r.stderr, f"{name}: message lacks '{expected}': {r.stderr.strip()}")
     check(not (WORK / "bad.png").exists(), f"{name}: output written")
 
-for f in failures:
-    print("FAIL:", f)
-print(f"{checks - len(failures)} passed, {len(failures)} failed")
-sys.exit(1 if failures else 0)
+finish()

@@ -3,23 +3,12 @@
 import csv
 import json
 import math
-import shutil
 import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import numpy as np
 
-GRANULE, WORK = sys.argv[1], Path(sys.argv[2])
-shutil.rmtree(WORK, ignore_errors=True)
-WORK.mkdir(parents=True)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
+from harness import GRANULE, WORK, check, finish
 
 
 def run(*args):
@@ -130,8 +119,4 @@ for name, (text, expected) in bad_cases.items():
 r = run("--set", "system.restitution=-1", "--out", str(WORK / "bad_set"))
 check(r.returncode == 2 and "system.restitution" in r.stderr and not (WORK / "bad_set").exists(), "bad --set accepted")
 
-for f in failures:
-    print("FAIL:", f)
-passed = 1 if not failures else 0
-print(f"{passed} passed, {1 - passed} failed")
-sys.exit(1 if failures else 0)
+finish()
