@@ -53,7 +53,7 @@ void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, V
   if (recording_ && !std::isnan(last.t)) {
     const double dt = time - last.t;
     const Vec2 v{last.vx, last.vy};
-    const double speed = std::hypot(v.x, v.y);
+    const double speed = std::sqrt(v.x * v.x + v.y * v.y);
     const double length = speed * dt;
     double alpha = std::atan2(v.y, v.x);
     if (alpha < 0.0) alpha += 2.0 * std::numbers::pi;

@@ -8,7 +8,7 @@ namespace granule {
 
 double impact_parameter(const CollisionRecord& r, double diameter) {
   const Vec2 k = r.contact_normal, v = r.relative_velocity;
-  return diameter * std::abs(k.x * v.y - k.y * v.x) / std::hypot(v.x, v.y);
+  return diameter * std::abs(k.x * v.y - k.y * v.x) / std::sqrt(v.x * v.x + v.y * v.y);
 }
 
 ImpactParameterStatistics::ImpactParameterStatistics(double diameter, int bins, std::int64_t window_collisions,

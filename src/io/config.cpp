@@ -300,7 +300,7 @@ RunConfig resolve(const toml::table& root) {
 
   CollisionStatisticsConfig& k = c.collisions;
   k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(true);
-  k.free_paths = in.boolean("collisions.free_paths").value_or(true);
+  k.free_paths = in.boolean("collisions.free_paths").value_or(false);
   k.window_collisions_per_particle =
       in.number("collisions.window_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)").value_or(1.0);
   k.from_collisions_per_particle =

@@ -17,7 +17,7 @@ result = granule("run", "--out", str(out), "--set", f"system.particles={N}", "--
                  "--set", "initial.equilibrate=2", "--set", "run.until_collisions_per_particle=8",
                  "--set", "output.snapshot_every_collisions_per_particle=2", "--set", "fields.cells=[6, 8]",
                  "--set", "collisions.density_windows=[[0, 1500], [1500, 1e9]]",
-                 "--set", "collisions.from_collisions_per_particle=1")
+                 "--set", "collisions.from_collisions_per_particle=1", "--set", "collisions.free_paths=true")
 check(result.returncode == 0, f"run failed: {result.stderr}")
 
 with h5py.File(out / "fields.h5") as f, h5py.File(out / "snapshots.h5") as snaps:

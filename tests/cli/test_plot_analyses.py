@@ -32,7 +32,8 @@ def plot(kind, source, out, *options):
 
 
 def run(name, *settings):
-    r = granule("run", "--out", WORK / name, "--set", "system.particles=1500", *(a for s in settings for a in ("--set", s)))
+    r = granule("run", "--out", WORK / name, "--set", "system.particles=1500", "--set", "collisions.free_paths=true",
+                *(a for s in settings for a in ("--set", s)))
     check(r.returncode == 0, f"run {name} failed: {r.stderr}")
     return WORK / name
 
