@@ -34,10 +34,15 @@ def fail(kind, message):
     sys.exit(2)
 
 
+def resolve_index(kind, option, index, count, things):
+    """`index` among `count` items (negative counts from the end), or exit 2 naming `option`."""
+    if index < -count or index >= count:
+        fail(kind, f"{option} {index} is out of range: the file has {count} {things} (allowed {-count} … {count - 1})")
+    return index % count
+
+
 def resolve_frame(kind, frame, frames):
-    if frame < -frames or frame >= frames:
-        fail(kind, f"--frame {frame} is out of range: the file has {frames} frames (allowed {-frames} … {frames - 1})")
-    return frame % frames
+    return resolve_index(kind, "--frame", frame, frames, "frames")
 
 
 def text(value):
@@ -100,6 +105,15 @@ def require_format(kind, f, path, expected, producer):
     """Exit 2 unless the HDF5 file's `format` attribute is `expected` (written by `producer`)."""
     if text(f.attrs.get("format", "")) != expected:
         fail(kind, f"{path} is not a {expected} file (written by `{producer}`)")
+
+
+def angle_ticks(ax, axis="x"):
+    """Angle axis from 0 to 2π labelled in multiples of π/2."""
+    import math
+
+    import numpy as np
+
+    getattr(ax, f"set_{axis}ticks")(np.arange(5) * 0.5 * math.pi, ["0", "π/2", "π", "3π/2", "2π"])
 
 
 def legend(ax):

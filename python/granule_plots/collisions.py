@@ -11,7 +11,7 @@ import math
 import numpy as np
 from scipy.special import erf
 
-from _common import fail, figure, legend, open_h5, parser, require_format, save, text
+from _common import angle_ticks, fail, figure, legend, open_h5, parser, require_format, save, text
 
 KIND = "collisions"
 PANEL_WIDTH, PANEL_HEIGHT = 5.0, 4.5
@@ -107,7 +107,7 @@ def draw_free_paths(axes, fp, name):
     ax_angle.plot(a_edges[1:], g["angular_cumulative"][:], "o", ms=3, label="L(l_max, α) / L(l_max, 2π)")
     ax_angle.plot(fine_alpha, model_alpha, "-", lw=1.2, label=f"(3.24): α₀ = {alpha0:.3g} (rms {attrs['alpha0_rms']:.2g})")
     ax_angle.plot(fine_alpha, fine_alpha / (2.0 * math.pi), ":", color="grey", lw=1, label="isotropic α/2π")
-    ax_angle.set_xticks(np.arange(5) * 0.5 * math.pi, ["0", "π/2", "π", "3π/2", "2π"])
+    angle_ticks(ax_angle)
     ax_angle.set(xlabel="α (angle of the path from +x)", ylabel="angular part", title="(D) L(l_max, α) (3.23) and (3.24)")
 
     # (E) Fig 3.33: L(l, α) at fixed α against the factorised form (3.24).

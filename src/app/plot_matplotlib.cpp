@@ -1,4 +1,4 @@
-// `granule plot fields | timeseries | profiles | phase | collisions | spectra`: line plots and shaded
+// `granule plot fields | timeseries | profiles | phase | collisions | spectra | f1`: line plots and shaded
 // maps drawn by the matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3).
 #include <fmt/format.h>
 
@@ -20,7 +20,7 @@ struct ScriptArguments {
   std::vector<std::string> quantities;
   std::string colormap = "gray";
   std::int64_t max_points = 200000;
-  std::string window = "total";
+  std::string window;
   std::string data;
 };
 
@@ -33,6 +33,8 @@ struct ScriptKind {
   const char* description;
   bool has_frames;    // the input holds several frames (--frame)
   bool writes_data;   // the script can also write the numbers drawn (--data FILE.json)
+  const char* window_help = nullptr;  // --window chooses a part of the file (nullptr: no such option)
+  const char* window_default = nullptr;
 };
 
 int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
@@ -48,7 +50,7 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
     }
   }
   if (std::string_view(kind.name) == "phase") arguments.insert(arguments.end(), {"--max-points", std::to_string(a.max_points)});
-  if (std::string_view(kind.name) == "collisions") arguments.insert(arguments.end(), {"--window", a.window});
+  if (kind.window_help != nullptr) arguments.insert(arguments.end(), {"--window", a.window});
   if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
   const int status = run_plot_script(kind.script, arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
@@ -67,10 +69,15 @@ constexpr ScriptKind kKinds[] = {
      "Phase-space scatter plots of one snapshot: x, y against v_x, v_y (thesis Figs 2.1, 2.11, 2.13)", true, false},
     {"collisions", "collisions", "collisions.h5", "collisions.png",
      "Impact-parameter and free-path distributions from collisions.h5 with the fits (3.24), (3.36) "
-     "(thesis Figs 2.16, 3.30-3.33)", false, true},
+     "(thesis Figs 2.16, 3.30-3.33)", false, true,
+     "Free-path group: total, density_window_<i> or speed_window_<i>", "total"},
     {"spectra", "spectra", "spectra.h5", "spectra.png",
      "Annulus spectra R(k), P(k), power maps R, P_x, P_y and the dominant length from the spectra.h5 of "
      "`granule analyze spectra` (thesis Figs 2.8-2.10, 3.21-3.27)", true, true},
+    {"f1", "f1", "f1.h5", "f1.png",
+     "The velocity distribution of `granule analyze f1`: h, phi, J, psi with their fits, b(theta), f*, f** and "
+     "the Jenkins-Richman form, and the per-window means, phases, stresses and ratio (thesis Figs 5.1-5.11)",
+     false, true, "Window of the f1 file drawn in the upper rows: its index K (negative counts from the end)", "0"},
 };
 
 }  // namespace
@@ -95,9 +102,9 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
     if (std::string_view(kind.name) == "phase") {
       c->add_option("--max-points", a->max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
     }
-    if (std::string_view(kind.name) == "collisions") {
-      c->add_option("--window", a->window, "Free-path group: total, density_window_<i> or speed_window_<i>")
-          ->capture_default_str();
+    if (kind.window_help != nullptr) {
+      a->window = kind.window_default;
+      c->add_option("--window", a->window, kind.window_help)->capture_default_str();
     }
     if (kind.writes_data) c->add_option("--data", a->data, "Also write the numbers drawn to this JSON file");
     c->callback([a, &kind] { finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); }); });

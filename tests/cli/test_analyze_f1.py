@@ -9,7 +9,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from harness import GRANULE, WORK, check, failures, finish, granule  # noqa: E402,F401
+from harness import WORK, check, finish, granule
 
 CELLS = (10, 10)
 FROM_FRAME = 2
