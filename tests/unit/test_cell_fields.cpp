@@ -6,26 +6,16 @@
 
 #include "analysis/cell_fields.hpp"
 #include "init/random.hpp"
+#include "unit/particle_rows.hpp"
 
 namespace granule {
 namespace {
-
-ParticleState make_state(std::initializer_list<std::array<double, 4>> rows) {
-  ParticleState s;
-  for (const auto& r : rows) {
-    s.x.push_back(r[0]);
-    s.y.push_back(r[1]);
-    s.vx.push_back(r[2]);
-    s.vy.push_back(r[3]);
-  }
-  return s;
-}
 
 TEST(CellFields, HandBuiltConfiguration) {
   // Box 2 × 2, cells 2 × 1 (each 1 × 2): three disks in the left cell, one in the right.
   const FieldGrid grid{2, 1, 2.0, 2.0};
   const ShearFrame frame{2.0, 2.0, 0.0};
-  const ParticleState s = make_state({{0.2, 0.5, 1.0, 0.0}, {0.7, 1.5, 3.0, 2.0}, {0.5, 1.0, -1.0, 1.0}, {1.5, 1.0, 4.0, -2.0}});
+  const ParticleState s = particles_from_rows({{0.2, 0.5, 1.0, 0.0}, {0.7, 1.5, 3.0, 2.0}, {0.5, 1.0, -1.0, 1.0}, {1.5, 1.0, 4.0, -2.0}});
   CellMoments m(grid);
   m.add(s, frame, false);
   const CellFields f = fields_from_moments(m, frame, 0.0, false);
@@ -112,7 +102,7 @@ TEST(CellFields, UniformShearHasVorticityMinusGammaEverywhereAcrossTheLeesEdward
 TEST(CellFields, IntervalAverageOfRepeatedConfigurationEqualsInstantaneousFields) {
   const FieldGrid grid{2, 2, 1.0, 1.0};
   const ShearFrame frame{1.0, 1.0, 0.0};
-  const ParticleState s = make_state({{0.1, 0.1, 1.0, 0.0}, {0.2, 0.3, -1.0, 0.5}, {0.7, 0.8, 0.0, 2.0}});
+  const ParticleState s = particles_from_rows({{0.1, 0.1, 1.0, 0.0}, {0.2, 0.3, -1.0, 0.5}, {0.7, 0.8, 0.0, 2.0}});
   CellMoments once(grid), thrice(grid);
   once.add(s, frame, false);
   for (int k = 0; k < 3; ++k) thrice.add(s, frame, false);
@@ -128,7 +118,7 @@ TEST(StreamwiseProfiles, MassWeightedRowAverages) {
   const FieldGrid grid{2, 2, 2.0, 2.0};
   const ShearFrame frame{2.0, 2.0, 0.0};
   // Bottom row: one disk at v_x = 1 on the left, three at v_x = 3 on the right.
-  const ParticleState s = make_state({{0.5, 0.5, 1.0, 0.0}, {1.5, 0.5, 3.0, 0.0}, {1.6, 0.6, 3.0, 0.0}, {1.7, 0.7, 3.0, 0.0}});
+  const ParticleState s = particles_from_rows({{0.5, 0.5, 1.0, 0.0}, {1.5, 0.5, 3.0, 0.0}, {1.6, 0.6, 3.0, 0.0}, {1.7, 0.7, 3.0, 0.0}});
   CellMoments m(grid);
   m.add(s, frame, false);
   const StreamwiseProfiles p = streamwise_profiles(fields_from_moments(m, frame, 0.0, false));

@@ -9,22 +9,14 @@
 #include <random>
 
 #include "init/initial_state.hpp"
+#include "unit/particle_rows.hpp"
 #include "render/color_scales.hpp"
 #include "render/configuration_picture.hpp"
 
 namespace granule::render {
 namespace {
 
-ParticleState disks(std::initializer_list<std::array<double, 4>> rows) {
-  ParticleState p;
-  for (const auto& r : rows) {
-    p.x.push_back(r[0]);
-    p.y.push_back(r[1]);
-    p.vx.push_back(r[2]);
-    p.vy.push_back(r[3]);
-  }
-  return p;
-}
+ParticleState disks(std::initializer_list<std::array<double, 4>> rows) { return particles_from_rows(rows); }
 
 PictureOptions bare(int width) {
   PictureOptions o;
