@@ -3,7 +3,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace granule {
 
@@ -27,5 +29,13 @@ struct FieldGrid {
   double center_x(int ix) const { return (ix + 0.5) * cell_width(); }
   double center_y(int iy) const { return (iy + 0.5) * cell_height(); }
 };
+
+// The default coarse graining: about 20 disks per cell (enough for a temperature, fine enough
+// for clusters), cells as square as the box allows.
+inline FieldGrid default_field_grid(double length_x, double length_y, std::int64_t particles) {
+  const double side = std::sqrt(20.0 * length_x * length_y / static_cast<double>(particles));
+  return {std::max(1, static_cast<int>(std::lround(length_x / side))),
+          std::max(1, static_cast<int>(std::lround(length_y / side))), length_x, length_y};
+}
 
 }  // namespace granule

@@ -21,7 +21,6 @@ using namespace granule::distribution;
 
 constexpr int kExitBadInput = 2;
 constexpr int kExitNoWindow = 1;
-constexpr double kParticlesPerCell = 20.0;  // the default coarse graining of §1.4.3
 
 struct F1CommandOptions {
   std::string snapshots;
@@ -97,13 +96,8 @@ int analyze_f1(const F1CommandOptions& o) {
   if (o.from_frame < 0 || o.from_frame >= first.frames)
     return bad_input(fmt::format("--from-frame must be in [0, {}) for this file (got {})", first.frames, o.from_frame));
   SamplingOptions sampling;
-  sampling.grid.length_x = system.length_x;
-  sampling.grid.length_y = system.length_y;
-  if (o.cells.empty()) {
-    const double cells = static_cast<double>(system.particles) / kParticlesPerCell;
-    sampling.grid.nx = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * system.length_x / system.length_y))));
-    sampling.grid.ny = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * system.length_y / system.length_x))));
-  } else {
+  sampling.grid = default_field_grid(system.length_x, system.length_y, system.particles);
+  if (!o.cells.empty()) {
     int nx = 0, ny = 0;
     char comma = 0, extra = 0;
     if (std::sscanf(o.cells.c_str(), "%d %c %d %c", &nx, &comma, &ny, &extra) != 3 || comma != ',' || nx < 1 || ny < 1 ||

@@ -185,12 +185,9 @@ void write_window(hid_t file, int index, const WindowResult& r, const Curves& c)
 void write_hdf5(const std::string& path, const F1RunDescription& run, const std::vector<WindowResult>& windows,
                 const std::vector<Curves>& curves) {
   const std::string partial = path + ".partial";
-  const hid_t file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  const hid_t file = create_partial_file(path, kFormat, kFormatVersion, kVersion);
   try {
     const SnapshotMetadata& m = run.metadata;
-    write_string_attribute(file, "format", kFormat);
-    write_attribute(file, "format_version", H5T_NATIVE_INT, &kFormatVersion);
-    write_string_attribute(file, "granule_version", kVersion);
     write_string_attribute(file, "source", std::filesystem::absolute(run.source).string());
     write_int(file, "particles", m.system.particles);
     const double box[2] = {m.system.length_x, m.system.length_y};
@@ -212,13 +209,12 @@ void write_hdf5(const std::string& path, const F1RunDescription& run, const std:
     write_int(file, "min_samples", static_cast<long long>(run.options.min_samples));
     H5Gclose(create_group(file, "windows"));
     for (std::size_t w = 0; w < windows.size(); ++w) write_window(file, static_cast<int>(w), windows[w], curves[w]);
-    check(H5Fclose(file), "closing " + partial);
   } catch (...) {
     H5Fclose(file);
     std::filesystem::remove(partial);
     throw;
   }
-  std::filesystem::rename(partial, path);
+  publish_partial_file(file, path);
 }
 
 std::string g(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.10g}", value); }

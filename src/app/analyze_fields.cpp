@@ -47,16 +47,12 @@ int analyze_fields(const FieldsOptions& o) {
                        "(negative indices count from the end)\n", o.first, o.last, head.frames - 1);
     return kExitBadInput;
   }
-  FieldGrid grid{0, 0, s.length_x, s.length_y};
-  if (o.cells.empty()) {
-    // About 20 disks per cell, as the run's default.
-    const double side = std::sqrt(20.0 * s.length_x * s.length_y / static_cast<double>(s.particles));
-    grid.nx = std::max(1, static_cast<int>(std::lround(s.length_x / side)));
-    grid.ny = std::max(1, static_cast<int>(std::lround(s.length_y / side)));
-  } else if (o.cells.size() != 2 || o.cells[0] < 1 || o.cells[1] < 1 || o.cells[0] > (1 << 14) || o.cells[1] > (1 << 14)) {
-    fmt::print(stderr, "granule analyze fields: error: --cells expects nx,ny with integers in [1, 16384]\n");
-    return kExitBadInput;
-  } else {
+  FieldGrid grid = default_field_grid(s.length_x, s.length_y, s.particles);
+  if (!o.cells.empty()) {
+    if (o.cells.size() != 2 || o.cells[0] < 1 || o.cells[1] < 1 || o.cells[0] > (1 << 14) || o.cells[1] > (1 << 14)) {
+      fmt::print(stderr, "granule analyze fields: error: --cells expects nx,ny with integers in [1, 16384]\n");
+      return kExitBadInput;
+    }
     grid.nx = o.cells[0];
     grid.ny = o.cells[1];
   }

@@ -103,7 +103,7 @@ class SpectraFile {
               const TransformOptions& transform, double dk, const AnnulusSpectrum& bins)
       : partial_(path + ".partial") {
     using namespace h5;
-    file_ = check_id(H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial_);
+    file_ = create_partial_file(path, kFormat, kFormatVersion, kVersion);
     try {
       write_layout(options, metadata, transform, dk, bins);
     } catch (...) {  // no destructor runs for a half-constructed object: clean up here
@@ -124,9 +124,6 @@ class SpectraFile {
                     double dk, const AnnulusSpectrum& bins) {
     using namespace h5;
     const SystemParams& s = metadata.system;
-    write_string_attribute(file_, "format", kFormat);
-    write_attribute(file_, "format_version", H5T_NATIVE_INT, &kFormatVersion);
-    write_string_attribute(file_, "granule_version", kVersion);
     write_string_attribute(file_, "source", std::filesystem::absolute(options.snapshots).string());
     write_string_attribute(file_, "method", options.method);
     write_attribute(file_, "max_mode", H5T_NATIVE_INT, &transform.max_mode);
@@ -200,9 +197,8 @@ class SpectraFile {
     }
   }
   void finish(const std::string& path) {
-    h5::check(H5Fclose(file_), "closing " + partial_);
+    h5::publish_partial_file(file_, path);
     file_ = -1;
-    std::filesystem::rename(partial_, path);
     finished_ = true;
   }
 

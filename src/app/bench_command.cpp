@@ -69,8 +69,7 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   sim.start_production(w.restitution);
   sim.synchronize();
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
-  const FieldGrid cells{std::max(1, static_cast<int>(std::sqrt(static_cast<double>(p.particles) / 20.0))),
-                        std::max(1, static_cast<int>(std::sqrt(static_cast<double>(p.particles) / 20.0))), 1.0, 1.0};
+  const FieldGrid cells = default_field_grid(p.length_x, p.length_y, p.particles);
   GlobalDiagnostics diagnostics(p, cells.nx, cells.ny);
   CollisionalStressField stress(cells, p.diameter);
   LocalDensity density(cells);

@@ -69,8 +69,7 @@ void RunMeasurements::after_step(Simulation& sim, bool final) {
     if (impacts_) sim.add_observer(impacts_.get());
     if (paths_) paths_->start();
     windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
-    windows_.start(config_.system.particles);
-    windows_.next_collisions = sim.collisions() + windows_.collisions_at(config_.collisions.window_collisions_per_particle);
+    windows_.start(config_.system.particles, sim.collisions());
     density_->update(sim.state());
   } else if (statistics_started_ && windows_.due(sim)) {
     // Classify the next window's collisions by the density at its start.

@@ -20,9 +20,10 @@ struct Schedule {
   double next_time = kInf;
   std::int64_t particles = 1;
 
-  void start(std::int64_t n) {
+  // First trigger one interval after `from_collisions`.
+  void start(std::int64_t n, std::int64_t from_collisions = 0) {
     particles = n;
-    if (every_c && *every_c > 0.0) next_collisions = collisions_at(*every_c);
+    if (every_c && *every_c > 0.0) next_collisions = from_collisions + collisions_at(*every_c);
     if (every_t) next_time = *every_t;
   }
   std::int64_t collisions_at(double c) const { return std::llround(c * static_cast<double>(particles)); }

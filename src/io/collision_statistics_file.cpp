@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <filesystem>
-
 #include "analysis/collision_statistics_fits.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_util.hpp"
@@ -150,11 +148,8 @@ std::string paths_csv(const FreePathStatistics& paths) {
 void write_collision_statistics(const std::string& dir, const CollisionStatisticsMetadata& m,
                                 const ImpactParameterStatistics* impacts, const FreePathStatistics* paths) {
   if (!impacts && !paths) return;
-  const std::string path = dir + "/collisions.h5", partial = path + ".partial";
-  const hid_t file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
-  write_string_attribute(file, "format", kFormat);
-  write_attribute(file, "format_version", H5T_NATIVE_INT, &kFormatVersion);
-  write_string_attribute(file, "granule_version", m.version);
+  const std::string path = dir + "/collisions.h5";
+  const hid_t file = create_partial_file(path, kFormat, kFormatVersion, m.version);
   write_string_attribute(file, "boundary", m.boundary);
   write_attribute(file, "particles", H5T_NATIVE_INT64, &m.system.particles);
   for (const auto& [name, value] : std::vector<std::pair<const char*, double>>{
@@ -167,8 +162,7 @@ void write_collision_statistics(const std::string& dir, const CollisionStatistic
   write_attribute(file, "density_cells_ny", H5T_NATIVE_INT, &m.density_grid.ny);
   if (impacts) write_impacts(file, *impacts);
   if (paths) write_paths(file, *paths);
-  H5Fclose(file);
-  std::filesystem::rename(partial, path);
+  publish_partial_file(file, path);
   if (impacts) write_file_atomically(dir + "/impact_parameters.csv", impact_csv(*impacts));
   if (paths) write_file_atomically(dir + "/free_paths.csv", paths_csv(*paths));
 }

@@ -282,10 +282,8 @@ RunConfig resolve(const toml::table& root) {
   if (diag) {
     c.diagnostic_cells = *diag;
   } else {
-    // About 20 disks per coarse-graining cell, square cells where the box allows.
-    const double side = std::sqrt(20.0 * area / n);
-    c.diagnostic_cells = {std::max(1, static_cast<int>(std::lround(s.length_x / side))),
-                          std::max(1, static_cast<int>(std::lround(s.length_y / side)))};
+    const FieldGrid grid = default_field_grid(s.length_x, s.length_y, s.particles);
+    c.diagnostic_cells = {grid.nx, grid.ny};
   }
 
   FieldsConfig& f = c.fields;

@@ -1,6 +1,5 @@
 #include "io/fields_file.hpp"
 
-#include <filesystem>
 #include <stdexcept>
 
 #include "io/hdf5_util.hpp"
@@ -40,12 +39,8 @@ struct FieldsWriter::Handles {
 
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
     : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {
-  const std::string partial = path + ".partial";
-  handles_->file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  handles_->file = create_partial_file(path, kFormat, kFormatVersion, m.version);
   const hid_t f = handles_->file;
-  write_string_attribute(f, "format", kFormat);
-  write_attribute(f, "format_version", H5T_NATIVE_INT, &kFormatVersion);
-  write_string_attribute(f, "granule_version", m.version);
   write_string_attribute(f, "source", m.source);
   write_string_attribute(f, "boundary", m.boundary);
   write_attribute(f, "nx", H5T_NATIVE_INT, &grid.nx);
@@ -127,9 +122,8 @@ void FieldsWriter::append(const FieldsFrame& frame) {
 
 void FieldsWriter::finish() {
   if (handles_->file < 0) return;
-  H5Fclose(handles_->file);
+  publish_partial_file(handles_->file, path_);
   handles_->file = -1;
-  std::filesystem::rename(path_ + ".partial", path_);
 }
 
 }  // namespace granule

@@ -1,5 +1,6 @@
 #include "io/hdf5_util.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace granule::h5 {
@@ -101,6 +102,20 @@ void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>&
 
 void write_vector(hid_t location, const char* name, const std::vector<double>& data) {
   write_dataset(location, name, {static_cast<hsize_t>(data.size())}, data);
+}
+
+hid_t create_partial_file(const std::string& path, const char* format, int format_version, const std::string& granule_version) {
+  const std::string partial = path + ".partial";
+  const hid_t file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  write_string_attribute(file, "format", format);
+  write_attribute(file, "format_version", H5T_NATIVE_INT, &format_version);
+  write_string_attribute(file, "granule_version", granule_version);
+  return file;
+}
+
+void publish_partial_file(hid_t file, const std::string& path) {
+  check(H5Fclose(file), "closing " + path + ".partial");
+  std::filesystem::rename(path + ".partial", path);
 }
 
 hid_t create_group(hid_t location, const char* name) {

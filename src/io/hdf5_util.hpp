@@ -25,6 +25,13 @@ T read_attribute(hid_t object, const char* name, hid_t type) {
 }
 std::string read_string_attribute(hid_t object, const char* name);
 
+// Files a user keeps are written as `<path>.partial` and renamed when complete.  Creates the
+// partial file stamped with the format name, its version and Granule's version (root attributes
+// `format`, `format_version`, `granule_version`).
+hid_t create_partial_file(const std::string& path, const char* format, int format_version, const std::string& granule_version);
+// Close a file made by create_partial_file and give it its final name `path`.
+void publish_partial_file(hid_t file, const std::string& path);
+
 // An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
 hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
 // Write (grow = true, extending the dataset by one frame) or read one frame of a dataset.

@@ -47,12 +47,8 @@ struct SnapshotWriter::Handles {
 SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& m)
     : handles_(std::make_unique<Handles>()), path_(path), particles_(m.system.particles), tc_(m.system.tc_duration > 0.0) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through exceptions
-  const std::string partial = path + ".partial";
-  handles_->file = check_id(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "creating " + partial);
+  handles_->file = create_partial_file(path, kFormat, kFormatVersion, m.version);
   const hid_t f = handles_->file;
-  write_string_attribute(f, "format", kFormat);
-  write_attribute(f, "format_version", H5T_NATIVE_INT, &kFormatVersion);
-  write_string_attribute(f, "granule_version", m.version);
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
   const double box[2] = {m.system.length_x, m.system.length_y};
@@ -71,7 +67,7 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
     H5Dclose(create_frames(f, name, file_type, {}));
   });
   if (tc_) H5Dclose(create_frames(f, "last_collision", H5T_IEEE_F64LE, {n}));
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + partial);
+  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path + ".partial");
 }
 
 SnapshotWriter::SnapshotWriter(const std::string& path) : handles_(std::make_unique<Handles>()), path_(path) {
@@ -100,11 +96,9 @@ void SnapshotWriter::append(const SnapshotFrame& frame) {
 }
 
 void SnapshotWriter::finish() {
-  if (handles_->file >= 0) {
-    check(H5Fclose(handles_->file), "closing " + path_);
-    handles_->file = -1;
-  }
-  std::filesystem::rename(path_ + ".partial", path_);
+  if (handles_->file < 0) return;
+  publish_partial_file(handles_->file, path_);
+  handles_->file = -1;
 }
 
 SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {

@@ -1,16 +1,15 @@
 #include "observers/global_diagnostics.hpp"
 
-#include <algorithm>
+#include "analysis/cell_fields.hpp"
+
 #include <cmath>
-#include <vector>
 
 namespace granule {
 
 GlobalDiagnostics::GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y)
     : params_(params),
       frame_{params.length_x, params.length_y, params.shear_velocity},
-      cells_x_(cells_x),
-      cells_y_(cells_y) {}
+      grid_{cells_x, cells_y, params.length_x, params.length_y} {}
 
 void GlobalDiagnostics::on_collision(const CollisionRecord& record) {
   impulse_sum_ += record.impulse;
@@ -32,21 +31,13 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   out.t = t;
   out.c = static_cast<double>(collisions) / nd;
 
-  // Cell sums for V(r) and T(r) (thesis §1.4.3, eq 1.3 with identity 1.5).
-  const std::size_t cells = static_cast<std::size_t>(cells_x_) * static_cast<std::size_t>(cells_y_);
-  std::vector<double> count(cells), sx(cells), sy(cells), sxx(cells);
-  std::vector<std::size_t> cell_of(n);
+  // V(r) and T(r) of the coarse-graining cells (§1.4.3, eq 1.3).
+  CellMoments moments(grid_);
+  moments.add(state, frame_, false);
+  const CellFields cells = fields_from_moments(moments, frame_, 0.0, false);
   double kinetic = 0.0, fluct = 0.0, fluct_xy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const int cx = std::min(cells_x_ - 1, static_cast<int>(state.x[i] / params_.length_x * cells_x_));
-    const int cy = std::min(cells_y_ - 1, static_cast<int>(state.y[i] / params_.length_y * cells_y_));
-    const std::size_t c = static_cast<std::size_t>(cx) + static_cast<std::size_t>(cy) * static_cast<std::size_t>(cells_x_);
-    cell_of[i] = c;
     const double vx = state.vx[i], vy = state.vy[i];
-    count[c] += 1.0;
-    sx[c] += vx;
-    sy[c] += vy;
-    sxx[c] += vx * vx + vy * vy;
     kinetic += vx * vx + vy * vy;
     const double ux = vx - frame_.mean_flow(state.y[i]);
     fluct += ux * ux + vy * vy;
@@ -59,10 +50,9 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
 
   double temperature_sum = 0.0;
   int occupied = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    if (count[c] == 0.0) continue;
-    const double mx = sx[c] / count[c], my = sy[c] / count[c];
-    temperature_sum += 0.5 * (sxx[c] / count[c] - mx * mx - my * my);
+  for (std::size_t c = 0; c < grid_.cells(); ++c) {
+    if (cells.count[c] == 0.0) continue;
+    temperature_sum += cells.temperature[c];
     ++occupied;
   }
   out.temperature = occupied > 0 ? temperature_sum / occupied : 0.0;
@@ -70,9 +60,9 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   // Moments of the fluctuating velocity relative to the cell velocity (κ, eq 1.8; §2.1).
   double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t c = cell_of[i];
-    const double ux = state.vx[i] - sx[c] / count[c];
-    const double uy = state.vy[i] - sy[c] / count[c];
+    const std::size_t c = grid_.index(state.x[i], state.y[i]);
+    const double ux = state.vx[i] - cells.velocity_x[c];
+    const double uy = state.vy[i] - cells.velocity_y[c];
     const double u2 = ux * ux + uy * uy;
     m2 += u2;
     m4 += u2 * u2;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
 #include "engine/system_params.hpp"
@@ -44,8 +45,7 @@ class GlobalDiagnostics final : public EventObserver {
  private:
   SystemParams params_;
   ShearFrame frame_;
-  int cells_x_;
-  int cells_y_;
+  FieldGrid grid_;  // coarse-graining cells of T̄ and κ
   double impulse_sum_ = 0.0;     // Σ J over the interval
   double impulse_xy_sum_ = 0.0;  // Σ J k_x k_y
   double interval_start_ = 0.0;
