@@ -83,20 +83,20 @@ void resolve_geometry(const ConfigReader& in, RunConfig& c) {
     throw ConfigError{"system.area_fraction and system.diameter are both set: give one of them "
                       "(the other follows from ν = πNσ²/(4 Lx Ly))"};
   }
-  if (diameter) {
-    s.diameter = *diameter;
-    c.area_fraction = area_fraction_of(s.diameter);
-    if (!(c.area_fraction < kClosePacking)) {  // σ just below the rounded bound can still reach it
-      throw ConfigError{fmt::format("system.diameter = {} gives area fraction {}, at or above close packing {}: "
-                                    "allowed {}{}", s.diameter, c.area_fraction, kClosePacking, diameters.text(), context)};
-    }
-  } else {
-    c.area_fraction = nu.value_or(kDefaultAreaFraction);
-    if (!area_fractions.contains(c.area_fraction)) {
-      throw ConfigError{fmt::format("system.area_fraction = {} (the default) is out of range: allowed {}{}",
-                                    c.area_fraction, area_fractions.text(), context)};
-    }
-    s.diameter = std::sqrt(4.0 * c.area_fraction * area / (M_PI * n));
+  const double given = diameter ? *diameter : nu.value_or(kDefaultAreaFraction);
+  if (!diameter && !area_fractions.contains(given)) {  // only the default can be out of range here
+    throw ConfigError{fmt::format("system.area_fraction = {} (the default) is out of range: allowed {}{}", given,
+                                  area_fractions.text(), context)};
+  }
+  s.diameter = diameter ? given : std::sqrt(4.0 * given * area / (M_PI * n));
+  // ν is always the one of σ, so that a configuration re-read from to_toml() (which stores σ) is
+  // identical in every field.
+  c.area_fraction = area_fraction_of(s.diameter);
+  if (!(c.area_fraction < kClosePacking)) {  // a value just below a rounded bound can still reach it
+    const std::string key = diameter ? "system.diameter" : "system.area_fraction";
+    throw ConfigError{fmt::format("{} = {} gives area fraction {}, at or above close packing {}: allowed {}{}", key,
+                                  given, c.area_fraction, kClosePacking,
+                                  (diameter ? diameters : area_fractions).text(), context)};
   }
 }
 

@@ -75,8 +75,6 @@ const toml::node* ConfigReader::find(const std::string& path) const {
   return section->as_table()->get(path.substr(dot + 1));
 }
 
-std::string ConfigReader::show(const std::string& path) const { return show_node(*find(path)); }
-
 std::optional<double> ConfigReader::number(const std::string& path, const NumberRange& range,
                                            const std::string& why) const {
   return number_if(path, [&](double value) { return range.contains(value); }, range.text() + why);
@@ -90,7 +88,7 @@ std::optional<double> ConfigReader::number_if(const std::string& path, const std
   if (!value || !std::isfinite(*value) || !allowed(*value)) {
     throw ConfigError{fmt::format("{} = {} is out of range: allowed {}", path, show_node(*node), allowed_text)};
   }
-  return value;
+  return *value + 0.0;  // -0.0 is 0 (and written as 0 by to_toml)
 }
 
 std::optional<std::int64_t> ConfigReader::integer(const std::string& path, std::int64_t low, std::int64_t high) const {
@@ -151,7 +149,7 @@ std::vector<std::pair<double, double>> ConfigReader::windows(const std::string& 
     if (!low || !high || !NumberRange{0.0, kUnbounded}.contains(*low) || !std::isfinite(*high) || !(*low < *high)) {
       throw fail();
     }
-    out.emplace_back(*low, *high);
+    out.emplace_back(*low + 0.0, *high + 0.0);  // no negative zero
   }
   return out;
 }

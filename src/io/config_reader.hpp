@@ -33,8 +33,6 @@ class ConfigReader {
   void check_known_keys(const ConfigSchema& schema) const;
 
   bool has(const std::string& path) const { return find(path) != nullptr; }
-  // The value at `path` as written (for messages); the key must exist.
-  std::string show(const std::string& path) const;
 
   // A number (integer or float) in `range`; `why` is appended to the message.
   std::optional<double> number(const std::string& path, const NumberRange& range, const std::string& why = {}) const;
