@@ -219,7 +219,7 @@ std::string violated_invariant(const RunConfig& c) {
   // Collision-count settings: whole counts of at least one collision (0 where it means "none"), at most 2^62.
   const auto count_ok = [&](double per_particle, bool zero_allowed) {
     if (zero_allowed && per_particle == 0.0) return true;
-    return std::isfinite(per_particle) && std::llround(per_particle * n) >= 1 && per_particle * n <= 0x1p62 * (1.0 + 1e-12);
+    return std::isfinite(per_particle) && per_particle * n <= 0x1p62 * (1.0 + 1e-12) && std::llround(per_particle * n) >= 1;
   };
   if (!c.until_collisions_per_particle && !c.until_time) return "no stop criterion";
   if (c.until_collisions_per_particle && !count_ok(*c.until_collisions_per_particle, false)) return "until count out of range";
