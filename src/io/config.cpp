@@ -28,7 +28,7 @@ const std::map<std::string, std::set<std::string>>& schema() {
       {"run", {"until_collisions_per_particle", "until_time"}},
       {"output",
        {"every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",
-        "snapshot_every_time"}},
+        "snapshot_every_time", "checkpoint_every_seconds"}},
       {"engine", {"particles_per_cell", "cells"}},
       {"diagnostics", {"cells"}},
       {"fields", {"enabled", "cells", "every_collisions_per_particle", "every_time", "subtract_shear_profile"}},
@@ -276,6 +276,10 @@ RunConfig resolve(const toml::table& root) {
   }
   if (!c.snapshot_every_collisions_per_particle && !c.snapshot_every_time) c.snapshot_every_collisions_per_particle = 0.0;
 
+  c.checkpoint_every_seconds =
+      in.number("output.checkpoint_every_seconds", 0.0, INFINITY, false, true, "[0, ∞) seconds of wall time (0: at every stop of the loop)")
+          .value_or(600.0);
+
   c.particles_per_cell = in.number("engine.particles_per_cell", 0.1, 20.0, false, false, "[0.1, 20]").value_or(1.0);
   c.engine_cells = in.int_pair("engine.cells", 3, 1 << 15);
   const auto diag = in.int_pair("diagnostics.cells", 1, 1 << 14);
@@ -361,6 +365,7 @@ std::string to_toml(const RunConfig& c) {
   if (c.sample_every_time) out += fmt::format("every_time = {:.17g}\n", *c.sample_every_time);
   if (c.snapshot_every_collisions_per_particle) out += fmt::format("snapshot_every_collisions_per_particle = {:.17g}\n", *c.snapshot_every_collisions_per_particle);
   if (c.snapshot_every_time) out += fmt::format("snapshot_every_time = {:.17g}\n", *c.snapshot_every_time);
+  out += fmt::format("checkpoint_every_seconds = {:.17g}\n", c.checkpoint_every_seconds);
   out += fmt::format("\n[engine]\nparticles_per_cell = {:.17g}\n", c.particles_per_cell);
   if (c.engine_cells) out += fmt::format("cells = [{}, {}]\n", c.engine_cells->first, c.engine_cells->second);
   out += fmt::format("\n[diagnostics]\ncells = [{}, {}]\n", c.diagnostic_cells.first, c.diagnostic_cells.second);
