@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "init/initial_state.hpp"
+#include "io/input_ranges.hpp"
 #include "theory/free_gas_stability.hpp"
 #include "theory/haff.hpp"
 #include "theory/kinetic_scales.hpp"
@@ -27,6 +29,55 @@ namespace {
 using std::numbers::pi;
 namespace th = granule::theory;
 
+// --- option checks --------------------------------------------------------------------------
+// Every numeric option is checked before anything is printed: a value outside the range its
+// formulas hold in (NaN, ±∞, e = 2, a negative length) is bad input, exit 2, with a message
+// naming the option and the range.  Lengths, speeds and rates share the ranges of `granule run`
+// (io/input_ranges.hpp).
+constexpr int kExitBadInput = 2;
+// ε = 1 − e² > 0: the cooling and steady-shear formulas divide by ε (e = 1 neither cools nor
+// reaches a steady sheared state).
+constexpr NumberRange kDissipativeRestitution{0.0, 1.0, true, true};
+constexpr NumberRange kInelasticity{0.0, 1.0, true, false};
+constexpr NumberRange kAreaFraction{0.0, kClosePacking, true, true};
+constexpr NumberRange kParticles{2.0, 2147483647.0};
+constexpr NumberRange kPoints{1.0, 10000.0};
+// K = k l0 of the cooling gas and δ̄ of the sheared one, dimensionless wavenumbers.  The
+// matrices hold O(1) and O(K²) entries, so the weakest eigenvalue loses K²·1e-16 of its value:
+// up to 1e6 it keeps 4 digits (measured: re λ1 = −2.1801 at K = 1e6 against −2.1800, −2.19 at 1e7;
+// re s_m = −3.92695 at δ̄ = 1e6 against −3.92699, −3.93 at 1e7).
+constexpr NumberRange kWavenumber{0.0, 1e6, true, false};
+constexpr NumberRange kDeltaBar{0.0, 1e6};
+// Pair correlation at contact: 1 in the dilute limit, larger in a dense gas (Henderson: 60 at 0.9).
+constexpr NumberRange kContactValue{1.0, 1e30};
+
+[[noreturn]] void refuse(const CLI::App& command, const std::string& message) {
+  fmt::print(stderr, "granule theory {}: error: {}\n", command.get_name(), message);
+  throw CLI::RuntimeError(kExitBadInput);
+}
+
+void require(const CLI::App& command, const std::string& option, double value, const NumberRange& range,
+             const std::string& why = {}) {
+  if (!range.contains(value)) refuse(command, fmt::format("{} = {} is out of range: allowed {}{}", option, value, range.text(), why));
+}
+
+// An option whose default means "not given" (derived from the others): checked only when given.
+void require_if_given(const CLI::App& command, const std::string& option, double value, const NumberRange& range,
+                      const std::string& why = {}) {
+  if (command.count(option) > 0) require(command, option, value, range, why);
+}
+
+// The last guard: options inside their ranges may still combine into a result beyond double
+// precision (say ν = 1e-300 with σ = 1e30); no infinite or NaN result is printed.
+void require_finite(const CLI::App& command, const std::vector<std::string>& names, const std::vector<double>& values) {
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    if (!std::isfinite(values[j])) {
+      refuse(command, fmt::format("these options give {} = {}, beyond double precision: bring them nearer to "
+                                  "ordinary values", names[j], values[j]));
+    }
+  }
+}
+
 // A table of numbers with named columns, printed aligned (with `# ` summary lines above it) or as
 // CSV (header and rows only, so that any CSV reader takes it).
 struct Table {
@@ -35,7 +86,8 @@ struct Table {
   std::vector<std::string> summary;
 };
 
-void print_table(const Table& table, bool csv) {
+void print_table(const CLI::App& command, const Table& table, bool csv) {
+  for (const auto& row : table.rows) require_finite(command, table.columns, row);
   if (csv) {
     std::string line;
     for (std::size_t j = 0; j < table.columns.size(); ++j) {
@@ -110,8 +162,17 @@ void add_haff(CLI::App& theory) {
                   "last row at this many collisions per particle c (default 3/eps)");
   cmd->add_option("--points", o->points, "rows, evenly spaced in c")->capture_default_str();
   cmd->add_flag("--csv", o->csv, "print CSV");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    require(*cmd, "--restitution", o->restitution, kDissipativeRestitution, " (e = 1 does not cool)");
+    require(*cmd, "--area-fraction", o->area_fraction, kAreaFraction);
+    require(*cmd, "--diameter", o->diameter, kLengthRange);
+    require(*cmd, "--temperature", o->temperature, kTemperatureRange);
+    require(*cmd, "--contact-value", o->contact_value, kContactValue);
+    require(*cmd, "--points", o->points, kPoints);
     const double eps = th::inelasticity(o->restitution);
+    // t(c) = t0 (exp(εc/2) − 1) must stay finite: εc ≤ 1000 (T has then fallen by e^−1000).
+    require(*cmd, "--collisions", o->collisions, NumberRange{0.0, 1000.0 / eps},
+            fmt::format(" (ε c ≤ 1000 with ε = 1 − e² = {:.6g}; 0: 3/ε)", eps));
     const double chi = o->enskog ? th::henderson_contact_value(o->area_fraction) : o->contact_value;
     const double t0 =
         th::haff_time_disks(o->temperature, o->restitution, o->diameter, o->area_fraction, chi);
@@ -136,7 +197,7 @@ void add_haff(CLI::App& theory) {
       table.rows.push_back(
           {c, t, T, 0.5 * th::disk_collision_frequency(T, o->diameter, o->area_fraction, chi)});
     }
-    print_table(table, o->csv);
+    print_table(*cmd, table, o->csv);
   });
 }
 
@@ -161,7 +222,12 @@ void add_free_stability(CLI::App& theory) {
   cmd->add_flag("--asymptotic", o->asymptotic,
                 "add the asymptotic forms (2.30)-(2.32) and (2.33)-(2.34)");
   cmd->add_flag("--csv", o->csv, "print CSV");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    require(*cmd, "--restitution", o->restitution, kDissipativeRestitution, " (e = 1 does not cool)");
+    require_if_given(*cmd, "--eps", o->eps, kInelasticity);
+    require(*cmd, "--K-min", o->k_min, kWavenumber);
+    require(*cmd, "--K-max", o->k_max, kWavenumber);
+    require(*cmd, "--points", o->points, kPoints);
     const double eps = o->eps > 0.0 ? o->eps : th::inelasticity(o->restitution);
     Table table{{"K", "re_l1", "im_l1", "re_l2", "im_l2", "re_l3", "im_l3", "l_shear", "p_density"},
                 {},
@@ -204,7 +270,7 @@ void add_free_stability(CLI::App& theory) {
       }
       table.rows.push_back(std::move(row));
     }
-    print_table(table, o->csv);
+    print_table(*cmd, table, o->csv);
   });
 }
 
@@ -236,7 +302,13 @@ void add_shear_stability(CLI::App& theory) {
       ->check(CLI::IsMember({"thesis", "consistent"}))
       ->capture_default_str();
   cmd->add_flag("--csv", o->csv, "print CSV");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    require(*cmd, "--sqrt-eps", o->sqrt_eps, kInelasticity);
+    require_if_given(*cmd, "--restitution", o->restitution, kDissipativeRestitution, " (e = 1 does not cool)");
+    require(*cmd, "--theta-deg", o->theta_deg, NumberRange{0.0, 180.0}, " (k and −k are one mode)");
+    require(*cmd, "--delta-min", o->delta_min, kDeltaBar);
+    require(*cmd, "--delta-max", o->delta_max, kDeltaBar);
+    require(*cmd, "--points", o->points, kPoints);
     const auto scaling = o->scaling == "thesis" ? th::ShearPressureScaling::thesis
                                                 : th::ShearPressureScaling::consistent;
     const double r =
@@ -289,7 +361,7 @@ void add_shear_stability(CLI::App& theory) {
                               th::most_unstable_direction(d, r, 360, scaling) * 180.0 / pi});
       }
     }
-    print_table(table, o->csv);
+    print_table(*cmd, table, o->csv);
   });
 }
 
@@ -312,7 +384,15 @@ void add_shear_scales(CLI::App& theory) {
   cmd->add_option("--mode", o->mode, "Fourier mode n: k = 2 pi n/L")->capture_default_str();
   cmd->add_option("--initial-temperature", o->initial_temperature,
                   "initial temperature T_i (default: T0, a start near the steady state)");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    require(*cmd, "--restitution", o->restitution, kDissipativeRestitution, " (e = 1 has no steady sheared state)");
+    require(*cmd, "--area-fraction", o->area_fraction, kAreaFraction);
+    require(*cmd, "--particles", o->particles, kParticles);
+    require(*cmd, "--box", o->box, kLengthRange);
+    require_if_given(*cmd, "--diameter", o->diameter, kLengthRange);
+    require(*cmd, "--shear-rate", o->shear_rate, kRateRange);
+    require(*cmd, "--mode", o->mode, NumberRange{1.0, 2147483647.0});
+    require_if_given(*cmd, "--initial-temperature", o->initial_temperature, kTemperatureRange);
     const double eps = th::inelasticity(o->restitution);
     const double sigma = o->diameter > 0.0 ? o->diameter
                                            : th::diameter_for_area_fraction(
@@ -329,6 +409,8 @@ void add_shear_scales(CLI::App& theory) {
         hot ? th::clustering_window_hot(eps, gamma, h) : th::clustering_window_cold(eps, gamma, h);
     const double tau_m = hot ? th::mass_motion_time_hot(k, l, eps, h)
                              : th::mass_motion_time_cold(k, l, eps, h, gamma);
+    require_finite(*cmd, {"diameter", "l", "T0", "h", "tau_m", "1/s3"},
+                   {sigma, l, T0, h, tau_m, th::linear_growth_time(k, l, eps, gamma)});
     Table table;
     table.summary = {
         fmt::format("eps {:.6g}  sqrt(eps) {:.6g}  diameter {:.6g}  l = pi sigma/8nu {:.6g}", eps,
@@ -346,7 +428,7 @@ void add_shear_scales(CLI::App& theory) {
                     window.contains(k * l) ? "clusters" : "does not cluster"),
         fmt::format("cluster separation L0 = l/sqrt(eps) = {:.6g} = {:.6g} L", l / std::sqrt(eps),
                     l / std::sqrt(eps) / o->box)};
-    print_table(table, false);
+    print_table(*cmd, table, false);
   });
 }
 
@@ -374,7 +456,18 @@ void add_steady_shear(CLI::App& theory) {
   cmd->add_option("--box-x", o->box_x, "Lx")->capture_default_str();
   cmd->add_option("--box-y", o->box_y, "Ly")->capture_default_str();
   cmd->add_flag("--csv", o->csv, "print CSV");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    const char* why = " (e = 1 has no steady sheared state)";
+    require_if_given(*cmd, "--restitution", o->restitution, kDissipativeRestitution, why);
+    require(*cmd, "--e-min", o->e_min, kDissipativeRestitution, why);
+    require(*cmd, "--e-max", o->e_max, kDissipativeRestitution, why);
+    require(*cmd, "--points", o->points, kPoints);
+    require(*cmd, "--shear-rate", o->shear_rate, kRateRange);
+    require(*cmd, "--area-fraction", o->area_fraction, kAreaFraction);
+    require_if_given(*cmd, "--diameter", o->diameter, kLengthRange);
+    require(*cmd, "--particles", o->particles, kParticles);
+    require(*cmd, "--box-x", o->box_x, kLengthRange);
+    require(*cmd, "--box-y", o->box_y, kLengthRange);
     const double sigma =
         o->diameter > 0.0
             ? o->diameter
@@ -393,7 +486,7 @@ void add_steady_shear(CLI::App& theory) {
            th::steady_shear_temperature_jenkins_richman(e, o->shear_rate, sigma, o->area_fraction),
            th::steady_shear_temperature_kinetic(e, o->shear_rate, sigma, o->area_fraction)});
     }
-    print_table(table, o->csv);
+    print_table(*cmd, table, o->csv);
   });
 }
 

@@ -2,25 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
-#include <set>
 #include <sstream>
 #include <toml++/toml.h>
+
+#include "cells/cell_grid.hpp"
+#include "io/config_reader.hpp"
+#include "io/input_ranges.hpp"
 
 namespace granule {
 
 namespace {
 
-// A validation failure: the message is complete ("key = value: allowed ...").
-struct ConfigError {
-  std::string message;
-};
-
-// The accepted keys of each section ("" is the top level).
-const std::map<std::string, std::set<std::string>>& schema() {
-  static const std::map<std::string, std::set<std::string>> keys = {
+const ConfigSchema& schema() {
+  static const ConfigSchema keys = {
       {"", {"seed"}},
       {"system", {"particles", "area_fraction", "diameter", "box", "restitution", "tc_duration"}},
       {"boundary", {"kind", "shear_velocity"}},
@@ -39,282 +36,188 @@ const std::map<std::string, std::set<std::string>>& schema() {
   return keys;
 }
 
-std::string show(const toml::node& node) {
-  std::ostringstream out;
-  if (node.is_string()) {
-    out << '"' << node.value_or(std::string{}) << '"';
-  } else if (node.is_array()) {
-    out << *node.as_array();
-  } else if (node.is_table()) {
-    out << "a table";
-  } else {
-    out << toml::node_view<const toml::node>{node};
-  }
-  return out.str();
+constexpr NumberRange kPositive{0.0, kUnbounded, true, true};
+constexpr NumberRange kNonNegative{0.0, kUnbounded, false, true};
+constexpr double kDefaultAreaFraction = 0.05;
+
+// A setting in collisions per particle c.  c·N is rounded to a whole number of collisions, so it
+// must name at least one (c ≥ 1/N) and at most 2⁶² (kMaxCollisions), so that the count and a count
+// plus an interval fit in an int64.  `zero_meaning` describes c = 0 where 0 is allowed.
+std::optional<double> collision_count_setting(const ConfigReader& in, const std::string& path, std::int64_t particles,
+                                              const std::string& zero_meaning = {}) {
+  const auto n = static_cast<double>(particles);
+  const NumberRange counts{1.0 / n, kMaxCollisions / n};
+  const bool zero_allowed = !zero_meaning.empty();
+  return in.number_if(path, [&](double c) { return (zero_allowed && c == 0.0) || counts.contains(c); },
+                      fmt::format("{}{} for N = {} (from one collision, c·N ≥ 1, to 2^62 collisions)",
+                                  zero_allowed ? "0 (" + zero_meaning + ") or " : "", counts.text(), particles));
 }
 
-class Reader {
- public:
-  explicit Reader(const toml::table& root) : root_(root) {}
-
-  void check_known_keys() const {
-    for (const auto& [key, node] : root_) {
-      const std::string name{key.str()};
-      if (node.is_table()) {
-        auto section = schema().find(name);
-        if (section == schema().end() || name.empty()) {
-          throw ConfigError{fmt::format("unknown section [{}]; allowed sections: system, boundary, "
-                                        "initial, run, output, engine, diagnostics, fields, collisions", name)};
-        }
-        for (const auto& [inner, value] : *node.as_table()) {
-          const std::string inner_name{inner.str()};
-          if (!section->second.count(inner_name)) {
-            throw ConfigError{fmt::format("unknown key {}.{} (value {}); allowed keys in [{}]: {}", name,
-                                          inner_name, show(value), name, join(section->second))};
-          }
-        }
-      } else if (!schema().at("").count(name)) {
-        throw ConfigError{fmt::format("unknown top-level key {} (value {}); allowed: seed, or a "
-                                      "section such as [system]", name, show(node))};
-      }
-    }
-  }
-
-  const toml::node* find(const std::string& path) const {
-    const auto dot = path.find('.');
-    if (dot == std::string::npos) return root_.get(path);
-    const toml::node* section = root_.get(path.substr(0, dot));
-    if (!section || !section->is_table()) return nullptr;
-    return section->as_table()->get(path.substr(dot + 1));
-  }
-
-  // A number (integer or float) in [lo, hi] with open/closed ends as described by `range`.
-  std::optional<double> number(const std::string& path, double lo, double hi, bool lo_open,
-                               bool hi_open, const std::string& range) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    const auto value = node->value<double>();
-    const bool ok = value && std::isfinite(*value) && (lo_open ? *value > lo : *value >= lo) &&
-                    (hi_open ? *value < hi : *value <= hi);
-    if (!ok) throw ConfigError{fmt::format("{} = {} is out of range: allowed {}", path, show(*node), range)};
-    return value;
-  }
-
-  std::optional<std::int64_t> integer(const std::string& path, std::int64_t lo, std::int64_t hi,
-                                      const std::string& range) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    const auto value = node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
-    if (!value || *value < lo || *value > hi) {
-      throw ConfigError{fmt::format("{} = {} is not allowed: expected an integer in {}", path, show(*node), range)};
-    }
-    return value;
-  }
-
-  std::optional<std::string> text(const std::string& path, const std::set<std::string>& allowed) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    const auto value = node->value<std::string>();
-    if (!value || !allowed.count(*value)) {
-      throw ConfigError{fmt::format("{} = {} is not allowed: expected one of {}", path, show(*node), join(allowed))};
-    }
-    return value;
-  }
-
-  // A pair of positive numbers [a, b].
-  std::optional<std::pair<double, double>> number_pair(const std::string& path) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    const toml::array* array = node->as_array();
-    if (array && array->size() == 2) {
-      const auto a = (*array)[0].value<double>();
-      const auto b = (*array)[1].value<double>();
-      if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a > 0.0 && *b > 0.0) return std::pair{*a, *b};
-    }
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected [Lx, Ly] with two positive numbers", path, show(*node))};
-  }
-
-  std::optional<bool> boolean(const std::string& path) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    if (!node->is_boolean()) throw ConfigError{fmt::format("{} = {} is not allowed: expected true or false", path, show(*node))};
-    return node->value<bool>();
-  }
-
-  // A list of windows [[low, high], ...] with 0 ≤ low < high.
-  std::vector<std::pair<double, double>> windows(const std::string& path) const {
-    const toml::node* node = find(path);
-    std::vector<std::pair<double, double>> out;
-    if (!node) return out;
-    const toml::array* list = node->as_array();
-    const auto fail = [&] {
-      return ConfigError{fmt::format("{} = {} is not allowed: expected a list of windows [[low, high], ...] with "
-                                     "0 <= low < high", path, show(*node))};
-    };
-    if (!list) throw fail();
-    for (const toml::node& item : *list) {
-      const toml::array* pair = item.as_array();
-      if (!pair || pair->size() != 2) throw fail();
-      const auto low = (*pair)[0].value<double>();
-      const auto high = (*pair)[1].value<double>();
-      if (!low || !high || !std::isfinite(*high) || *low < 0.0 || *low >= *high) throw fail();
-      out.emplace_back(*low, *high);
-    }
-    return out;
-  }
-
-  std::optional<std::pair<int, int>> int_pair(const std::string& path, int lo, int hi) const {
-    const toml::node* node = find(path);
-    if (!node) return std::nullopt;
-    const toml::array* array = node->as_array();
-    if (array && array->size() == 2 && (*array)[0].is_integer() && (*array)[1].is_integer()) {
-      const auto a = *(*array)[0].value<std::int64_t>();
-      const auto b = *(*array)[1].value<std::int64_t>();
-      if (a >= lo && a <= hi && b >= lo && b <= hi) return std::pair{static_cast<int>(a), static_cast<int>(b)};
-    }
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected [nx, ny] with integers in [{}, {}]", path,
-                                  show(*node), lo, hi)};
-  }
-
- private:
-  static std::string join(const std::set<std::string>& items) {
-    std::string out;
-    for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-    return out;
-  }
-  const toml::table& root_;
-};
-
-void apply_override(toml::table& root, const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) {
-    throw ConfigError{fmt::format("--set {}: expected section.key=value", assignment)};
-  }
-  const std::string path = assignment.substr(0, eq);
-  const std::string raw = assignment.substr(eq + 1);
-  // The value is TOML ("0.8", "[2, 1]", "\"lees-edwards\""); a bare word is taken as a string.
-  toml::table parsed;
-  try {
-    parsed = toml::parse("v = " + raw);
-  } catch (const toml::parse_error&) {
-    parsed = toml::table{{"v", raw}};
-  }
-  const auto dot = path.find('.');
-  toml::table* target = &root;
-  std::string key = path;
-  if (dot != std::string::npos) {
-    const std::string section = path.substr(0, dot);
-    key = path.substr(dot + 1);
-    if (!root.contains(section)) root.insert(section, toml::table{});
-    target = root.get(section)->as_table();
-    if (!target) throw ConfigError{fmt::format("--set {}: {} is not a section", assignment, section)};
-  }
-  target->insert_or_assign(key, *parsed.get("v"));
-}
-
-RunConfig resolve(const toml::table& root) {
-  Reader in(root);
-  in.check_known_keys();
-  RunConfig c;
-  c.seed = static_cast<std::uint64_t>(in.integer("seed", 0, INT64_MAX, "[0, 2^63)").value_or(1));
-
+// Box, diameter and area fraction ν = πNσ²/(4 L_x L_y) (thesis §3.1.1).  Besides ν below close
+// packing, the box may be at most kMaxBoxOverDiameter diameters long in either direction.
+void resolve_geometry(const ConfigReader& in, RunConfig& c) {
   SystemParams& s = c.system;
-  s.particles = in.integer("system.particles", 2, INT32_MAX, "[2, 2147483647]").value_or(4000);
-  const auto box = in.number_pair("system.box").value_or(std::pair{1.0, 1.0});
+  const auto box = in.number_pair("system.box", kLengthRange).value_or(std::pair{1.0, 1.0});
   s.length_x = box.first;
   s.length_y = box.second;
-  const auto nu = in.number("system.area_fraction", 0.0, kClosePacking, true, true,
-                            fmt::format("(0, {:.4f}) (hexagonal close packing π/(2√3))", kClosePacking));
-  const auto diameter = in.number("system.diameter", 0.0, INFINITY, true, true, "(0, ∞)");
+  const double area = s.length_x * s.length_y;
+  const auto n = static_cast<double>(s.particles);
+  const auto area_fraction_of = [&](double sigma) { return M_PI * n * sigma * sigma / (4.0 * area); };
+  const double sigma_min = std::max(s.length_x, s.length_y) / kMaxBoxOverDiameter;
+  const double sigma_max = std::sqrt(4.0 * area * kClosePacking / (M_PI * n));
+  const std::string context =
+      fmt::format(" for N = {} and system.box = [{}, {}] (at most {:g} diameters across the box, so that positions "
+                  "resolve contacts; below hexagonal close packing π/(2√3))", s.particles, s.length_x, s.length_y,
+                  kMaxBoxOverDiameter);
+  if (!(sigma_min < sigma_max)) {
+    throw ConfigError{fmt::format("system.box = [{}, {}] is too elongated for N = {}: no diameter keeps both sides "
+                                  "within {:g} diameters below close packing; allowed aspect ratios up to {:g}",
+                                  s.length_x, s.length_y, s.particles, kMaxBoxOverDiameter,
+                                  4.0 * kClosePacking * kMaxBoxOverDiameter * kMaxBoxOverDiameter / (M_PI * n))};
+  }
+  const NumberRange diameters{sigma_min, sigma_max, false, true};
+  const NumberRange area_fractions{area_fraction_of(sigma_min), kClosePacking, false, true};
+  const auto nu = in.number("system.area_fraction", area_fractions, context);
+  const auto diameter = in.number("system.diameter", diameters, context);
   if (nu && diameter) {
     throw ConfigError{"system.area_fraction and system.diameter are both set: give one of them "
                       "(the other follows from ν = πNσ²/(4 Lx Ly))"};
   }
-  const double area = s.length_x * s.length_y;
-  const auto n = static_cast<double>(s.particles);
-  if (diameter) {
-    s.diameter = *diameter;
-    c.area_fraction = M_PI * n * s.diameter * s.diameter / (4.0 * area);
-    if (c.area_fraction >= kClosePacking) {
-      throw ConfigError{fmt::format("system.diameter = {} gives area fraction {:.4f}, at or above close "
-                                    "packing {:.4f}: allowed diameters are below {:.6g}", *diameter,
-                                    c.area_fraction, kClosePacking, std::sqrt(4.0 * area * kClosePacking / (M_PI * n)))};
-    }
-  } else {
-    c.area_fraction = nu.value_or(0.05);
-    s.diameter = std::sqrt(4.0 * c.area_fraction * area / (M_PI * n));
+  const double given = diameter ? *diameter : nu.value_or(kDefaultAreaFraction);
+  if (!diameter && !area_fractions.contains(given)) {  // only the default can be out of range here
+    throw ConfigError{fmt::format("system.area_fraction = {} (the default) is out of range: allowed {}{}", given,
+                                  area_fractions.text(), context)};
   }
-  s.restitution = in.number("system.restitution", 0.0, 1.0, true, false, "(0, 1]").value_or(0.6);
-  s.tc_duration = in.number("system.tc_duration", 0.0, INFINITY, false, true, "[0, ∞) (0 switches the TC model off)").value_or(0.0);
+  s.diameter = diameter ? given : std::sqrt(4.0 * given * area / (M_PI * n));
+  // ν is always the one of σ, so that a configuration re-read from to_toml() (which stores σ) is
+  // identical in every field.
+  c.area_fraction = area_fraction_of(s.diameter);
+  if (!(c.area_fraction < kClosePacking)) {  // a value just below a rounded bound can still reach it
+    const std::string key = diameter ? "system.diameter" : "system.area_fraction";
+    throw ConfigError{fmt::format("{} = {} gives area fraction {}, at or above close packing {}: allowed {}{}", key,
+                                  given, c.area_fraction, kClosePacking,
+                                  (diameter ? diameters : area_fractions).text(), context)};
+  }
+}
 
+// The speeds: T_i, and U relative to it.  Only numerical bounds (see input_ranges.hpp).
+void resolve_speeds(const ConfigReader& in, RunConfig& c) {
+  SystemParams& s = c.system;
+  c.initial_temperature = in.number("initial.temperature", kTemperatureRange).value_or(1.0);
   c.lees_edwards = in.text("boundary.kind", {"periodic", "lees-edwards"}).value_or("periodic") == "lees-edwards";
-  s.shear_velocity = in.number("boundary.shear_velocity", -INFINITY, INFINITY, true, true, "any finite number").value_or(0.0);
+  const double thermal_speed = std::sqrt(c.initial_temperature);
+  const NumberRange shear_speeds{kSpeedRange.low, std::min(kSpeedRange.high, kMaxShearOverThermalSpeed * thermal_speed)};
+  s.shear_velocity =
+      in.number_if("boundary.shear_velocity", [&](double u) { return u == 0.0 || shear_speeds.contains(std::abs(u)); },
+                   fmt::format("0 or |U| in {} (at most {:g} √T_i with initial.temperature = {}, so that the thermal "
+                               "velocities stay resolved beside the shear profile)",
+                               shear_speeds.text(), kMaxShearOverThermalSpeed, c.initial_temperature))
+          .value_or(0.0);
   if (!c.lees_edwards && s.shear_velocity != 0.0) {
     throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\" "
                                   "(a periodic box has no shear; allowed: 0)", s.shear_velocity)};
   }
+}
 
-  c.initial_temperature = in.number("initial.temperature", 0.0, INFINITY, true, true, "(0, ∞)").value_or(1.0);
-  c.equilibrate = in.number("initial.equilibrate", 0.0, INFINITY, false, true, "[0, ∞) collisions per particle").value_or(0.0);
+// Exactly one of `count` and `time` may be given.
+void require_one_of(const ConfigReader& in, const std::string& count, const std::string& time) {
+  if (in.has(count) && in.has(time)) throw ConfigError{fmt::format("{} and {} are both set: give one", count, time)};
+}
+
+// The engine's cell grid must exist (choose_cell_grid explains why not) and have 32-bit cell ids.
+void check_engine_grid(const RunConfig& c) {
+  const SystemParams& s = c.system;
+  const CellGridChoice choice = choose_cell_grid(
+      {s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells});
+  if (!choice.grid) throw ConfigError{choice.error};
+  const std::int64_t cells = static_cast<std::int64_t>(choice.grid->nx) * choice.grid->ny;
+  if (cells > kMaxEngineCells) {
+    throw ConfigError{fmt::format("system.box = [{}, {}] gives an engine grid of {} × {} = {} cells, more than "
+                                  "2^31 − 1: set engine.cells or raise engine.particles_per_cell",
+                                  s.length_x, s.length_y, choice.grid->nx, choice.grid->ny, cells)};
+  }
+}
+
+RunConfig resolve(const toml::table& root) {
+  ConfigReader in(root);
+  in.check_known_keys(schema());
+  RunConfig c;
+  c.seed = static_cast<std::uint64_t>(in.integer("seed", 0, INT64_MAX).value_or(1));
+
+  SystemParams& s = c.system;
+  s.particles = in.integer("system.particles", 2, INT32_MAX).value_or(4000);
+  const std::int64_t n = s.particles;
+  resolve_geometry(in, c);
+  s.restitution = in.number("system.restitution", NumberRange{0.0, 1.0, true, false}).value_or(0.6);
+  s.tc_duration = in.number("system.tc_duration", kNonNegative, " (0 switches the TC model off)").value_or(0.0);
+  resolve_speeds(in, c);
+  c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
   const std::string placement = in.text("initial.placement", {"auto", "random", "lattice"}).value_or("auto");
   c.placement = placement == "random" ? Placement::kRandom : placement == "lattice" ? Placement::kLattice : Placement::kAuto;
 
-  c.until_collisions_per_particle = in.number("run.until_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)");
-  c.until_time = in.number("run.until_time", 0.0, INFINITY, true, true, "(0, ∞)");
+  c.until_collisions_per_particle = collision_count_setting(in, "run.until_collisions_per_particle", n);
+  c.until_time = in.number("run.until_time", kPositive);
   if (!c.until_collisions_per_particle && !c.until_time) c.until_collisions_per_particle = 10.0;
 
-  c.sample_every_collisions_per_particle = in.number("output.every_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)");
-  c.sample_every_time = in.number("output.every_time", 0.0, INFINITY, true, true, "(0, ∞)");
-  if (c.sample_every_collisions_per_particle && c.sample_every_time) {
-    throw ConfigError{"output.every_collisions_per_particle and output.every_time are both set: give one"};
-  }
+  require_one_of(in, "output.every_collisions_per_particle", "output.every_time");
+  c.sample_every_collisions_per_particle = collision_count_setting(in, "output.every_collisions_per_particle", n);
+  c.sample_every_time = in.number("output.every_time", kPositive);
   if (!c.sample_every_collisions_per_particle && !c.sample_every_time) c.sample_every_collisions_per_particle = 1.0;
-  c.snapshot_every_collisions_per_particle = in.number("output.snapshot_every_collisions_per_particle", 0.0, INFINITY, false, true, "[0, ∞) (0: final state only)");
-  c.snapshot_every_time = in.number("output.snapshot_every_time", 0.0, INFINITY, true, true, "(0, ∞)");
-  if (c.snapshot_every_collisions_per_particle && c.snapshot_every_time) {
-    throw ConfigError{"output.snapshot_every_collisions_per_particle and output.snapshot_every_time are both set: give one"};
-  }
+  require_one_of(in, "output.snapshot_every_collisions_per_particle", "output.snapshot_every_time");
+  c.snapshot_every_collisions_per_particle =
+      collision_count_setting(in, "output.snapshot_every_collisions_per_particle", n, "initial and final state only");
+  c.snapshot_every_time = in.number("output.snapshot_every_time", kPositive);
   if (!c.snapshot_every_collisions_per_particle && !c.snapshot_every_time) c.snapshot_every_collisions_per_particle = 0.0;
 
+  // Wall time is free of the simulation's scales: a checkpoint a year apart is still a schedule.
   c.checkpoint_every_seconds =
-      in.number("output.checkpoint_every_seconds", 0.0, INFINITY, false, true, "[0, ∞) seconds of wall time (0: at every stop of the loop)")
+      in.number("output.checkpoint_every_seconds", NumberRange{0.0, 3.2e7}, " seconds of wall time (0: at every stop)")
           .value_or(600.0);
 
-  c.particles_per_cell = in.number("engine.particles_per_cell", 0.1, 20.0, false, false, "[0.1, 20]").value_or(1.0);
+  // The engine needs about N/particles_per_cell cells, each with a 32-bit id.
+  const double min_per_cell = std::max(0.1, static_cast<double>(n) / static_cast<double>(kMaxEngineCells));
+  c.particles_per_cell = in.number("engine.particles_per_cell", NumberRange{min_per_cell, 20.0},
+                                   min_per_cell > 0.1 ? fmt::format(" for N = {} (at most 2^31 − 1 engine cells)", n)
+                                                      : std::string{})
+                             .value_or(1.0);
   c.engine_cells = in.int_pair("engine.cells", 3, 1 << 15);
+  check_engine_grid(c);
   const auto diag = in.int_pair("diagnostics.cells", 1, 1 << 14);
   if (diag) {
     c.diagnostic_cells = *diag;
-  } else {
+  } else {  // ~20 disks per cell, within the range an explicit grid may have
     const FieldGrid grid = default_field_grid(s.length_x, s.length_y, s.particles);
-    c.diagnostic_cells = {grid.nx, grid.ny};
+    c.diagnostic_cells = {std::min(grid.nx, 1 << 14), std::min(grid.ny, 1 << 14)};
   }
 
   FieldsConfig& f = c.fields;
   f.enabled = in.boolean("fields.enabled").value_or(true);
   f.cells = in.int_pair("fields.cells", 1, 1 << 14).value_or(c.diagnostic_cells);
-  f.every_collisions_per_particle = in.number("fields.every_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)");
-  f.every_time = in.number("fields.every_time", 0.0, INFINITY, true, true, "(0, ∞)");
-  if (f.every_collisions_per_particle && f.every_time) {
-    throw ConfigError{"fields.every_collisions_per_particle and fields.every_time are both set: give one"};
-  }
+  require_one_of(in, "fields.every_collisions_per_particle", "fields.every_time");
+  f.every_collisions_per_particle = collision_count_setting(in, "fields.every_collisions_per_particle", n);
+  f.every_time = in.number("fields.every_time", kPositive);
   f.subtract_shear_profile = in.boolean("fields.subtract_shear_profile").value_or(false);
 
   CollisionStatisticsConfig& k = c.collisions;
   k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(true);
   k.free_paths = in.boolean("collisions.free_paths").value_or(false);
   k.window_collisions_per_particle =
-      in.number("collisions.window_collisions_per_particle", 0.0, INFINITY, true, true, "(0, ∞)").value_or(1.0);
+      collision_count_setting(in, "collisions.window_collisions_per_particle", n).value_or(1.0);
   k.from_collisions_per_particle =
-      in.number("collisions.from_collisions_per_particle", 0.0, INFINITY, false, true, "[0, ∞)").value_or(0.0);
+      in.number("collisions.from_collisions_per_particle", NumberRange{0.0, kMaxCollisions / static_cast<double>(n)},
+                fmt::format(" for N = {} (at most 2^62 collisions)", n))
+          .value_or(0.0);
   for (const auto& [low, high] : in.windows("collisions.density_windows")) k.density_windows.push_back({low, high});
   for (const auto& [low, high] : in.windows("collisions.speed_windows")) k.speed_windows.push_back({low, high});
-  k.impact_bins = static_cast<int>(in.integer("collisions.impact_bins", 2, 100000, "[2, 100000]").value_or(50));
-  k.length_bins = static_cast<int>(in.integer("collisions.length_bins", 2, 100000, "[2, 100000]").value_or(100));
-  k.angle_bins = static_cast<int>(in.integer("collisions.angle_bins", 4, 100000, "[4, 100000]").value_or(72));
-  // Default range: ten mean free paths l = Lx Ly / (2 N σ) (thesis §3.1.2).
-  k.max_length = in.number("collisions.max_length", 0.0, INFINITY, true, true, "(0, ∞)")
-                     .value_or(10.0 * area / (2.0 * n * s.diameter));
+  k.impact_bins = static_cast<int>(in.integer("collisions.impact_bins", 2, 100000).value_or(50));
+  k.length_bins = static_cast<int>(in.integer("collisions.length_bins", 2, 100000).value_or(100));
+  k.angle_bins = static_cast<int>(in.integer("collisions.angle_bins", 4, 100000).value_or(72));
+  // Default range: ten mean free paths l = Lx Ly / (2 N σ) (thesis §3.1.2).  The bin width must
+  // stay a normal number, and the range finite.
+  const NumberRange lengths{kMinMaxLengthOverDiameter * s.diameter, kMaxMaxLengthOverBox * std::max(s.length_x, s.length_y)};
+  k.max_length = in.number("collisions.max_length", lengths,
+                           fmt::format(" ({:g} σ to {:g} box lengths)", kMinMaxLengthOverDiameter, kMaxMaxLengthOverBox))
+                     .value_or(10.0 * s.length_x * s.length_y / (2.0 * static_cast<double>(n) * s.diameter));
   return c;
 }
 
