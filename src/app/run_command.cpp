@@ -123,12 +123,13 @@ void report_collapse(const RunSession& session, const std::string& out) {
 int run(const RunOptions& options) {
   const bool resume = !options.resume_dir.empty();
   const std::string out = resume ? options.resume_dir : options.out_dir;
+  // From the start: a signal during set-up stops the run at its first event, checkpointed.
+  const InterruptSignals signals;
   try {
     const RunConfig config = configuration(options, resume, out);
     const CellGrid grid = engine_grid(config);
     std::unique_ptr<RunSession> session = resume ? resumed_session(config, grid, out) : new_session(config, grid, options);
     print_header(config);
-    const InterruptSignals signals;
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
     try {
