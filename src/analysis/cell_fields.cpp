@@ -7,6 +7,20 @@ namespace granule {
 CellMoments::CellMoments(const FieldGrid& g)
     : grid(g), count(g.cells()), px(g.cells()), py(g.cells()), pxx(g.cells()), pxy(g.cells()), pyy(g.cells()) {}
 
+void CellMoments::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put_integer(prefix + "configurations", configurations);
+  for (const auto& [name, values] : {std::pair{"count", &count}, {"px", &px}, {"py", &py}, {"pxx", &pxx}, {"pxy", &pxy}, {"pyy", &pyy}}) {
+    archive.put(prefix + name, *values);
+  }
+}
+
+void CellMoments::restore(const StateArchive& archive, const std::string& prefix) {
+  configurations = static_cast<int>(archive.integer(prefix + "configurations"));
+  for (const auto& [name, values] : {std::pair{"count", &count}, {"px", &px}, {"py", &py}, {"pxx", &pxx}, {"pxy", &pxy}, {"pyy", &pyy}}) {
+    *values = archive.get_sized<double>(prefix + name, grid.cells());
+  }
+}
+
 void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile) {
   for (std::size_t i = 0; i < state.size(); ++i) {
     const std::size_t c = grid.index(state.x[i], state.y[i]);

@@ -13,6 +13,7 @@
 
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
+#include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -26,6 +27,8 @@ struct CellMoments {
   // Add one configuration.  With `subtract_shear_profile`, each particle's velocity is taken
   // relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of `frame` before it is summed.
   void add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile);
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 };
 
 struct CellFields {

@@ -32,4 +32,20 @@ CollisionalStress CollisionalStressField::stress(double t) const {
   return out;
 }
 
+void CollisionalStressField::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put_scalar(prefix + "start", start_);
+  archive.put(prefix + "sum_xx", sum_xx_);
+  archive.put(prefix + "sum_xy", sum_xy_);
+  archive.put(prefix + "sum_yy", sum_yy_);
+  archive.put(prefix + "count", count_);
+}
+
+void CollisionalStressField::restore(const StateArchive& archive, const std::string& prefix) {
+  start_ = archive.scalar(prefix + "start");
+  sum_xx_ = archive.get_sized<double>(prefix + "sum_xx", grid_.cells());
+  sum_xy_ = archive.get_sized<double>(prefix + "sum_xy", grid_.cells());
+  sum_yy_ = archive.get_sized<double>(prefix + "sum_yy", grid_.cells());
+  count_ = archive.get_sized<double>(prefix + "count", grid_.cells());
+}
+
 }  // namespace granule

@@ -9,6 +9,7 @@
 
 #include "analysis/field_grid.hpp"
 #include "engine/observer.hpp"
+#include "engine/state_archive.hpp"
 
 namespace granule {
 
@@ -27,6 +28,8 @@ class CollisionalStressField final : public EventObserver {
   // The stress (1.6) over the interval [start, t].
   CollisionalStress stress(double t) const;
   double interval_start() const { return start_; }
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
   FieldGrid grid_;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/field_grid.hpp"
+#include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -29,6 +30,10 @@ class LocalDensity {
   }
   double at(double x, double y) const { return density_[grid_.index(x, y)]; }
   const FieldGrid& grid() const { return grid_; }
+  void save(StateArchive& archive, const std::string& prefix) const { archive.put(prefix + "density", density_); }
+  void restore(const StateArchive& archive, const std::string& prefix) {
+    density_ = archive.get_sized<double>(prefix + "density", grid_.cells());
+  }
 
  private:
   FieldGrid grid_;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
+#include <type_traits>
 #include <utility>
 
 namespace granule {
@@ -71,6 +73,68 @@ void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, V
     }
   }
   last = {time, velocity_after.x, velocity_after.y};
+}
+
+namespace {
+// A histogram's fields, in one list for saving and restoring.
+template <typename Histogram, typename Visit>
+void for_each_part(Histogram& h, Visit&& visit) {
+  visit("counts", h.counts);
+  visit("overflow", h.overflow);
+  visit("paths", h.paths);
+  visit("sum_length", h.sum_length);
+  visit("sum_length_squared", h.sum_length_squared);
+  visit("sum_speed", h.sum_speed);
+}
+
+void save_histograms(StateArchive& archive, const std::string& prefix, const std::vector<PathHistogram>& list) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    for_each_part(list[k], [&](const char* name, const auto& value) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) {
+        archive.put_scalar(prefix + std::to_string(k) + "/" + name, value);
+      } else {
+        archive.put(prefix + std::to_string(k) + "/" + name, value);
+      }
+    });
+  }
+}
+
+void restore_histograms(const StateArchive& archive, const std::string& prefix, std::vector<PathHistogram>& list) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    for_each_part(list[k], [&](const char* name, auto& value) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) {
+        value = archive.scalar(prefix + std::to_string(k) + "/" + name);
+      } else {
+        value = archive.get_sized<double>(prefix + std::to_string(k) + "/" + name, value.size());
+      }
+    });
+  }
+}
+}  // namespace
+
+void FreePathStatistics::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put_integer(prefix + "recording", recording_ ? 1 : 0);
+  std::vector<double> last(3 * last_.size());
+  for (std::size_t i = 0; i < last_.size(); ++i) {
+    last[3 * i] = last_[i].t;
+    last[3 * i + 1] = last_[i].vx;
+    last[3 * i + 2] = last_[i].vy;
+  }
+  archive.put(prefix + "last_collision_t_vx_vy", std::move(last));
+  save_histograms(archive, prefix + "total/", {total_});
+  save_histograms(archive, prefix + "by_density/", by_density_);
+  save_histograms(archive, prefix + "by_speed/", by_speed_);
+}
+
+void FreePathStatistics::restore(const StateArchive& archive, const std::string& prefix) {
+  recording_ = archive.integer(prefix + "recording") != 0;
+  const auto& last = archive.get_sized<double>(prefix + "last_collision_t_vx_vy", 3 * last_.size());
+  for (std::size_t i = 0; i < last_.size(); ++i) last_[i] = {last[3 * i], last[3 * i + 1], last[3 * i + 2]};
+  std::vector<PathHistogram> total{total_};
+  restore_histograms(archive, prefix + "total/", total);
+  total_ = total[0];
+  restore_histograms(archive, prefix + "by_density/", by_density_);
+  restore_histograms(archive, prefix + "by_speed/", by_speed_);
 }
 
 }  // namespace granule

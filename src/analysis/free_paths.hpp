@@ -13,6 +13,7 @@
 #include "analysis/density_windows.hpp"
 #include "analysis/histogram.hpp"
 #include "engine/observer.hpp"
+#include "engine/state_archive.hpp"
 
 namespace granule {
 
@@ -54,6 +55,8 @@ class FreePathStatistics final : public EventObserver {
   const PathHistogram& total() const { return total_; }
   const std::vector<PathHistogram>& by_density() const { return by_density_; }
   const std::vector<PathHistogram>& by_speed() const { return by_speed_; }
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
   void record_path(std::int32_t disk, double time, Vec2 end, Vec2 velocity_after);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 namespace granule {
@@ -46,6 +47,42 @@ void ImpactParameterStatistics::on_collision(const CollisionRecord& r) {
     open_.collisions = 0;
     std::fill(open_.counts.begin(), open_.counts.end(), 0.0);
   }
+}
+
+void ImpactParameterStatistics::save(StateArchive& archive, const std::string& prefix) const {
+  std::vector<ImpactParameterWindow> all = windows_;
+  all.push_back(open_);  // the open window last
+  std::vector<double> t_start, t_end;
+  std::vector<std::int64_t> collisions;
+  std::vector<std::vector<double>> counts;
+  for (const ImpactParameterWindow& w : all) {
+    t_start.push_back(w.t_start);
+    t_end.push_back(w.t_end);
+    collisions.push_back(w.collisions);
+    counts.push_back(w.counts);
+  }
+  archive.put(prefix + "window_t_start", std::move(t_start));
+  archive.put(prefix + "window_t_end", std::move(t_end));
+  archive.put(prefix + "window_collisions", std::move(collisions));
+  archive.put_rows(prefix + "window_counts", counts);
+  archive.put(prefix + "total", total_);
+  archive.put_rows(prefix + "by_density", by_density_);
+}
+
+void ImpactParameterStatistics::restore(const StateArchive& archive, const std::string& prefix) {
+  const auto bins = static_cast<std::size_t>(bins_.bins);
+  const auto counts = archive.rows(prefix + "window_counts");
+  const auto& t_start = archive.get_sized<double>(prefix + "window_t_start", counts.size());
+  const auto& t_end = archive.get_sized<double>(prefix + "window_t_end", counts.size());
+  const auto& collisions = archive.get_sized<std::int64_t>(prefix + "window_collisions", counts.size());
+  if (counts.empty() || counts[0].size() != bins) throw std::runtime_error("checkpoint impact-parameter windows do not fit the bins");
+  windows_.clear();
+  for (std::size_t w = 0; w < counts.size(); ++w) windows_.push_back({t_start[w], t_end[w], collisions[w], counts[w]});
+  open_ = windows_.back();
+  windows_.pop_back();
+  total_ = archive.get_sized<double>(prefix + "total", bins);
+  by_density_ = archive.rows(prefix + "by_density");
+  if (by_density_.size() != density_windows_.size()) throw std::runtime_error("checkpoint density windows do not fit the configuration");
 }
 
 }  // namespace granule

@@ -10,6 +10,7 @@
 #include "analysis/density_windows.hpp"
 #include "analysis/histogram.hpp"
 #include "engine/observer.hpp"
+#include "engine/state_archive.hpp"
 
 namespace granule {
 
@@ -34,6 +35,8 @@ class ImpactParameterStatistics final : public EventObserver {
   const std::vector<std::vector<double>>& by_density() const { return by_density_; }
   const std::vector<DensityWindow>& density_windows() const { return density_windows_; }
   std::int64_t window_collisions() const { return window_collisions_; }
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
   double diameter_;

@@ -1,8 +1,9 @@
 // `granule analyze collisions RUN_DIR`: collision statistics (impact parameters, free paths) and
-// fields with the collisional stress, measured after the fact.  Collisions are not stored, but
-// every snapshot holds the full engine state, so the run is continued from a chosen frame — bit
-// for bit the trajectory the run itself followed — with the measurements of [fields] and
-// [collisions] attached (settable with --set), for as many collisions per particle as asked.
+// fields with the collisional stress, measured after the fact.  Collisions are not stored, so the
+// run is continued from a chosen snapshot frame — the same physical state and clock, with new
+// round-off, hence a statistically equivalent trajectory rather than the same bits — with the
+// measurements of [fields] and [collisions] attached (settable with --set), for as many collisions
+// per particle as asked.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>

@@ -67,7 +67,6 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   // Melt lattices and forget the initial transient: 2 elastic collisions per particle, untimed.
   sim.run(std::numeric_limits<double>::infinity(), 2 * p.particles);
   sim.start_production(w.restitution);
-  sim.synchronize();
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
   const FieldGrid cells = default_field_grid(p.length_x, p.length_y, p.particles);
   GlobalDiagnostics diagnostics(p, cells.nx, cells.ny);

@@ -15,28 +15,21 @@ RunMeasurements::RunMeasurements(const RunConfig& config, std::string out_dir)
       frame_{config.system.length_x, config.system.length_y, config.system.shear_velocity},
       grid_{config.fields.cells.first, config.fields.cells.second, config.system.length_x, config.system.length_y} {}
 
-void RunMeasurements::start(Simulation& sim) {
+void RunMeasurements::set_up(Simulation& sim) {
   const SystemParams& s = config_.system;
-  const std::string boundary = config_.lees_edwards ? "lees-edwards" : "periodic";
   if (config_.fields.enabled) {
     // By default a fields frame goes with every snapshot.
     const bool own = config_.fields.every_collisions_per_particle || config_.fields.every_time;
     fields_schedule_ = own ? Schedule{config_.fields.every_collisions_per_particle, config_.fields.every_time}
                            : Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
     fields_schedule_.start(s.particles);
-    fields_schedule_.advance(sim);
-    fields_writer_ = std::make_unique<FieldsWriter>(
-        out_dir_ + "/fields.h5", grid_,
-        FieldsMetadata{s, boundary, config_.fields.subtract_shear_profile, "run", kVersion}, true);
     collisional_ = std::make_unique<CollisionalStressField>(grid_, s.diameter);
     sim.add_observer(collisional_.get());
     interval_moments_ = std::make_unique<CellMoments>(grid_);
-    write_fields_frame(sim);
   }
   const CollisionStatisticsConfig& k = config_.collisions;
   if (k.impact_parameters || k.free_paths) {
     density_ = std::make_unique<LocalDensity>(grid_);
-    density_->update(sim.state());
     statistics_start_ = std::max<std::int64_t>(sim.collisions(), std::llround(k.from_collisions_per_particle * static_cast<double>(s.particles)));
     const std::int64_t window = std::max<std::int64_t>(1, std::llround(k.window_collisions_per_particle * static_cast<double>(s.particles)));
     if (k.impact_parameters) {
@@ -49,7 +42,76 @@ void RunMeasurements::start(Simulation& sim) {
           density_.get());
       sim.add_observer(paths_.get());
     }
+  }
+}
+
+FieldsMetadata RunMeasurements::fields_metadata() const {
+  return {config_.system, config_.lees_edwards ? "lees-edwards" : "periodic", config_.fields.subtract_shear_profile, "run",
+          kVersion};
+}
+
+void RunMeasurements::start(Simulation& sim) {
+  set_up(sim);
+  if (config_.fields.enabled) {
+    fields_schedule_.advance(sim);
+    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", grid_, fields_metadata(), true);
+    write_fields_frame(sim);
+  }
+  if (density_) {
+    density_->update(sim.state());
     after_step(sim, false);
+  }
+}
+
+void RunMeasurements::resume(Simulation& sim, const StateArchive& archive, const std::string& prefix) {
+  set_up(sim);
+  if (config_.fields.enabled) {
+    fields_schedule_.restore(archive, prefix + "fields_schedule/");
+    interval_moments_->restore(archive, prefix + "interval_moments/");
+    collisional_->restore(archive, prefix + "collisional_stress/");
+    interval_start_t_ = archive.scalar(prefix + "interval_start_t");
+    interval_start_c_ = archive.scalar(prefix + "interval_start_c");
+    last_fields_collisions_ = archive.integer(prefix + "last_fields_collisions");
+    last_sample_collisions_ = archive.integer(prefix + "last_sample_collisions");
+    fields_writer_ = FieldsWriter::reopen(out_dir_ + "/fields.h5", grid_, true, archive.integer(prefix + "fields_frames"));
+  }
+  if (density_) {
+    density_->restore(archive, prefix + "density/");
+    statistics_start_ = archive.integer(prefix + "statistics_start");
+    statistics_started_ = archive.integer(prefix + "statistics_started") != 0;
+    statistics_from_t_ = archive.scalar(prefix + "statistics_from_t");
+    statistics_from_c_ = archive.scalar(prefix + "statistics_from_c");
+    if (impacts_) impacts_->restore(archive, prefix + "impact_parameters/");
+    if (paths_) paths_->restore(archive, prefix + "free_paths/");
+    if (statistics_started_) {
+      windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
+      windows_.start(config_.system.particles);
+      windows_.restore(archive, prefix + "windows/");
+      if (impacts_) sim.add_observer(impacts_.get());
+    }
+  }
+}
+
+void RunMeasurements::save(StateArchive& archive, const std::string& prefix) const {
+  if (fields_writer_) {
+    fields_schedule_.save(archive, prefix + "fields_schedule/");
+    interval_moments_->save(archive, prefix + "interval_moments/");
+    collisional_->save(archive, prefix + "collisional_stress/");
+    archive.put_scalar(prefix + "interval_start_t", interval_start_t_);
+    archive.put_scalar(prefix + "interval_start_c", interval_start_c_);
+    archive.put_integer(prefix + "last_fields_collisions", last_fields_collisions_);
+    archive.put_integer(prefix + "last_sample_collisions", last_sample_collisions_);
+    archive.put_integer(prefix + "fields_frames", fields_writer_->frames());
+  }
+  if (density_) {
+    density_->save(archive, prefix + "density/");
+    archive.put_integer(prefix + "statistics_start", statistics_start_);
+    archive.put_integer(prefix + "statistics_started", statistics_started_ ? 1 : 0);
+    archive.put_scalar(prefix + "statistics_from_t", statistics_from_t_);
+    archive.put_scalar(prefix + "statistics_from_c", statistics_from_c_);
+    if (impacts_) impacts_->save(archive, prefix + "impact_parameters/");
+    if (paths_) paths_->save(archive, prefix + "free_paths/");
+    if (statistics_started_) windows_.save(archive, prefix + "windows/");
   }
 }
 
@@ -76,8 +138,10 @@ void RunMeasurements::after_step(Simulation& sim, bool final) {
     density_->update(sim.state());
     windows_.advance(sim);
   }
-  if (fields_writer_ && (fields_schedule_.due(sim) || final) && sim.collisions() != last_fields_collisions_) {
-    write_fields_frame(sim);
+  if (fields_writer_ && (fields_schedule_.due(sim) || final)) {
+    // A frame needs at least one collision since the last one (the collisional stress is an
+    // average over the interval); the schedule moves on either way, so it can never stall.
+    if (sim.collisions() != last_fields_collisions_) write_fields_frame(sim);
     fields_schedule_.advance(sim);
   }
 }

@@ -27,6 +27,9 @@ class RunMeasurements {
 
   // Attach the observers and write the first fields frame.
   void start(Simulation& sim);
+  // Continue from a checkpoint instead: the files keep the frames written before it.
+  void resume(Simulation& sim, const StateArchive& archive, const std::string& prefix);
+  void save(StateArchive& archive, const std::string& prefix) const;
   // The earliest collision count and time at which the loop must stop for a measurement.
   std::int64_t next_collisions() const;
   double next_time() const;
@@ -40,6 +43,9 @@ class RunMeasurements {
 
  private:
   void write_fields_frame(const Simulation& sim);
+  // The parts common to start() and resume(): schedules, accumulators, observers.
+  void set_up(Simulation& sim);
+  FieldsMetadata fields_metadata() const;
 
   RunConfig config_;
   std::string out_dir_;

@@ -1,12 +1,18 @@
-// A recurring output trigger of the run loop, in collisions per particle or in time.
+// A recurring output trigger of the run loop, every `every_c` collisions per particle or every
+// `every_t` of time, counted from an origin.  Advancing jumps straight to the first trigger after
+// the present (O(1), however far the clock moved), and always lies strictly ahead, so no schedule
+// can stall the loop: a time interval below one ulp of the clock is rounded up to the next
+// representable time (and reported by `rounded_up`).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "engine/simulation.hpp"
+#include "engine/state_archive.hpp"
 
 namespace granule::app {
 
@@ -14,25 +20,57 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
 
 struct Schedule {
-  std::optional<double> every_c;
+  std::optional<double> every_c;  // 0 or absent: never by collisions
   std::optional<double> every_t;
+  std::int64_t particles = 1;
+  std::int64_t origin_collisions = 0;
+  double origin_time = 0.0;
   std::int64_t next_collisions = kNoLimit;
   double next_time = kInf;
-  std::int64_t particles = 1;
+  bool rounded_up = false;
 
-  // First trigger one interval after `from_collisions`.
-  void start(std::int64_t n, std::int64_t from_collisions = 0) {
+  // First trigger one interval after the origin.
+  void start(std::int64_t n, std::int64_t from_collisions = 0, double from_time = 0.0) {
     particles = n;
-    if (every_c && *every_c > 0.0) next_collisions = from_collisions + collisions_at(*every_c);
-    if (every_t) next_time = *every_t;
+    origin_collisions = from_collisions;
+    origin_time = from_time;
+    next_collisions = by_collisions() ? from_collisions + interval_collisions(1.0) : kNoLimit;
+    next_time = every_t ? from_time + *every_t : kInf;
   }
-  std::int64_t collisions_at(double c) const { return std::llround(c * static_cast<double>(particles)); }
   bool due(const Simulation& sim) const { return sim.collisions() >= next_collisions || sim.time() >= next_time; }
+  // Move to the first trigger after the present.
   void advance(const Simulation& sim) {
-    while (every_c && *every_c > 0.0 && sim.collisions() >= next_collisions) {
-      next_collisions = collisions_at(static_cast<double>(next_collisions) / static_cast<double>(particles) + *every_c);
+    if (by_collisions() && sim.collisions() >= next_collisions) {
+      const double periods =
+          std::floor(static_cast<double>(sim.collisions() - origin_collisions) / (*every_c * static_cast<double>(particles)));
+      next_collisions = std::max(sim.collisions() + 1, origin_collisions + interval_collisions(periods + 1.0));
     }
-    while (every_t && sim.time() >= next_time) next_time += *every_t;
+    if (every_t && sim.time() >= next_time) {
+      next_time = origin_time + (std::floor((sim.time() - origin_time) / *every_t) + 1.0) * *every_t;
+      if (!(next_time > sim.time())) {
+        next_time = std::nextafter(sim.time(), kInf);
+        rounded_up = true;
+      }
+    }
+  }
+
+  void save(StateArchive& archive, const std::string& prefix) const {
+    archive.put_integer(prefix + "origin_collisions", origin_collisions);
+    archive.put_scalar(prefix + "origin_time", origin_time);
+    archive.put_integer(prefix + "next_collisions", next_collisions);
+    archive.put_scalar(prefix + "next_time", next_time);
+  }
+  void restore(const StateArchive& archive, const std::string& prefix) {
+    origin_collisions = archive.integer(prefix + "origin_collisions");
+    origin_time = archive.scalar(prefix + "origin_time");
+    next_collisions = archive.integer(prefix + "next_collisions");
+    next_time = archive.scalar(prefix + "next_time");
+  }
+
+ private:
+  bool by_collisions() const { return every_c && *every_c > 0.0; }
+  std::int64_t interval_collisions(double periods) const {
+    return std::llround(periods * *every_c * static_cast<double>(particles));
   }
 };
 

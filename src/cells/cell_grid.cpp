@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace granule {
@@ -84,6 +85,22 @@ void CellLists::remove(std::int32_t particle, std::int32_t cell) {
   std::int32_t* link = &head_[static_cast<std::size_t>(cell)];
   while (*link != particle) link = &next_[static_cast<std::size_t>(*link)];
   *link = next_[static_cast<std::size_t>(particle)];
+}
+
+void CellLists::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "head", head_);
+  archive.put(prefix + "next", next_);
+}
+
+void CellLists::restore(const StateArchive& archive, const std::string& prefix, int cells, std::int64_t particles) {
+  head_ = archive.get<std::int32_t>(prefix + "head");
+  next_ = archive.get<std::int32_t>(prefix + "next");
+  const auto valid = [&](std::int32_t id) { return id == kEnd || (id >= 0 && id < particles); };
+  if (head_.size() != static_cast<std::size_t>(cells) || next_.size() != static_cast<std::size_t>(particles) ||
+      !std::all_of(head_.begin(), head_.end(), valid) || !std::all_of(next_.begin(), next_.end(), valid)) {
+    throw std::runtime_error("checkpoint cell lists do not fit a grid of " + std::to_string(cells) + " cells and " +
+                             std::to_string(particles) + " particles");
+  }
 }
 
 }  // namespace granule

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/state_archive.hpp"
+
 namespace granule {
 
 struct CellGrid {
@@ -52,6 +54,10 @@ class CellLists {
   std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
   std::int32_t next(std::int32_t particle) const { return next_[static_cast<std::size_t>(particle)]; }
   std::size_t bytes() const { return (head_.capacity() + next_.capacity()) * sizeof(std::int32_t); }
+  // The order within each list decides the order of candidate partners, hence ties: a
+  // checkpoint keeps it exactly.
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix, int cells, std::int64_t particles);
 
   static constexpr std::int32_t kEnd = -1;
 

@@ -5,6 +5,9 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+
+#include "engine/state_archive.hpp"
 
 namespace granule {
 
@@ -30,6 +33,19 @@ class CollapseDetector {
     return collapsed;
   }
   void shift_times(double delta) { start_ -= delta; }
+
+  void save(StateArchive& archive, const std::string& prefix) const {
+    archive.put_integer(prefix + "window", window_);
+    archive.put_integer(prefix + "count", count_);
+    archive.put_scalar(prefix + "start", start_);
+    archive.put_scalar(prefix + "previous", previous_);
+  }
+  void restore(const StateArchive& archive, const std::string& prefix) {
+    window_ = archive.integer(prefix + "window");
+    count_ = archive.integer(prefix + "count");
+    start_ = archive.scalar(prefix + "start");
+    previous_ = archive.scalar(prefix + "previous");
+  }
 
  private:
   std::int64_t window_ = 1;

@@ -16,18 +16,33 @@ struct CollisionRecord {
   Vec2 first_position;           // lab position of disk 1 at contact (inside the box)
   Vec2 contact_point;            // lab position of the contact point, mapped into the box
   Vec2 contact_normal;           // k̂: unit vector from disk 1 to (the image of) disk 2
+  Vec2 first_velocity_before;    // lab velocity of disk 1 before the collision
+  Vec2 second_velocity_before;   // lab velocity of disk 2 before the collision (its own)
   Vec2 relative_velocity;        // v21 = v1 − v2 before the collision (image-shifted)
   Vec2 first_velocity_after;     // lab velocity of disk 1 after the collision
   Vec2 second_velocity_after;    // lab velocity of disk 2 after the collision (its own, not its image's)
   double impulse = 0.0;          // J·k̂ = (1 + e)/2 (v21·k̂) > 0, momentum given to disk 2
   double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
-  int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1)
+  int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves
+                                 // at v_x + image_y U relative to disk 2 itself (§1.4.2)
+};
+
+// A disk leaving through the top or bottom of a Lees–Edwards box re-enters from the image on the
+// other side with v_x changed by ∓U (thesis §1.4.2): the only place where the boundary changes
+// the total momentum and, with cross-boundary collisions, the kinetic energy.
+struct BoundaryCrossingRecord {
+  double time = 0.0;
+  std::int32_t particle = 0;
+  int direction = 0;            // +1 out through the top, −1 out through the bottom
+  double velocity_x_before = 0.0;
+  double velocity_x_after = 0.0;
 };
 
 class EventObserver {
  public:
   virtual ~EventObserver() = default;
   virtual void on_collision(const CollisionRecord& record) = 0;
+  virtual void on_boundary_crossing(const BoundaryCrossingRecord&) {}
 };
 
 }  // namespace granule

@@ -25,16 +25,11 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const P
       grid_(grid),
       frame_{params.length_x, params.length_y, params.shear_velocity},
       shear_rate_(params.shear_velocity / params.length_y) {
-  const auto n = static_cast<std::size_t>(params.particles);
   load(state);
-  count_.assign(n, 0);
-  cell_.assign(n, 0);
-  kind_.assign(n, EventKind::kNone);
-  partner_.assign(n, -1);
-  partner_count_.assign(n, 0);
+  allocate_arrays();
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
-    last_collision_.resize(n, -kInf);
+    last_collision_.resize(static_cast<std::size_t>(params.particles), -kInf);
   }
   clock_base_ = clock.time;
   t_ref_ = clock.strain_reference;
@@ -42,6 +37,15 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const P
   events_ = clock.events;
   rebuild();
   collapse_detector_.reset(collapse_window(), t_now_);
+}
+
+void Simulation::allocate_arrays() {
+  const auto n = static_cast<std::size_t>(params_.particles);
+  count_.assign(n, 0);
+  cell_.assign(n, 0);
+  kind_.assign(n, EventKind::kNone);
+  partner_.assign(n, -1);
+  partner_count_.assign(n, 0);
 }
 
 double Simulation::shear_offset() const {
@@ -113,16 +117,6 @@ void Simulation::load(const ParticleState& state) {
   t_.assign(state.size(), t_now_);
 }
 
-void Simulation::synchronize() {
-  // Go through the same lab-frame state a snapshot stores, so that a restart from the snapshot
-  // (constructor: load + rebuild) repeats this run bit for bit.
-  const ParticleState now = state();
-  rebase();
-  load(now);
-  rebuild();
-  collapse_detector_.reset(collapse_window(), t_now_);
-}
-
 ParticleState Simulation::state() const {
   ParticleState out;
   out.resize(static_cast<std::size_t>(params_.particles));
@@ -157,7 +151,7 @@ void Simulation::start_production(double restitution) {
   for (auto& t : last_collision_) t = -kInf;
 }
 
-void Simulation::predict(std::int32_t i) {
+Simulation::Prediction Simulation::next_event(std::int32_t i) const {
   const double dt_i = t_now_ - t_[at(i)];
   const double vxi = vx_[at(i)];
   const double vyi = vy_[at(i)];
@@ -195,49 +189,42 @@ void Simulation::predict(std::int32_t i) {
   }
   if (best == kInf) kind = EventKind::kNone;
 
-  // Collisions with the 3×3 block of cells; images across the boundaries come from the cell
-  // offsets, since the sheared frame is plainly periodic.
+  // Collisions with the disks of the 3×3 block of cells.
   const double sigma = params_.diameter;
   std::int32_t partner = -1;
-  for (int dr = -1; dr <= 1; ++dr) {
-    int r = row + dr;
-    int iy = 0;
-    if (r < 0) {
-      r += grid_.ny;
-      iy = -1;
-    } else if (r >= grid_.ny) {
-      r -= grid_.ny;
-      iy = 1;
+  for_each_neighbour(i, [&](std::int32_t j, double shift_x, const ImageShift& row_shift) {
+    const double dt_j = t_now_ - t_[at(j)];
+    const Vec2 rel_position{x_[at(j)] + vx_[at(j)] * dt_j + shift_x - xi,
+                            y_[at(j)] + vy_[at(j)] * dt_j + row_shift.position.y - yi};
+    const Vec2 rel_velocity{vx_[at(j)] + row_shift.velocity_x - vxi, vy_[at(j)] - vyi};
+    if (const double t = collision_time(rel_position, rel_velocity, sigma); t < best) {
+      best = t;
+      kind = EventKind::kCollision;
+      partner = j;
     }
-    const ImageShift row_shift = frame_.image_shift(0, iy, s);
-    for (int dc = -1; dc <= 1; ++dc) {
-      int c = column + dc;
-      double shift_x = row_shift.position.x;
-      if (c < 0) {
-        c += grid_.nx;
-        shift_x -= params_.length_x;
-      } else if (c >= grid_.nx) {
-        c -= grid_.nx;
-        shift_x += params_.length_x;
-      }
-      for (std::int32_t j = lists_.first(grid_.index(c, r)); j != CellLists::kEnd; j = lists_.next(j)) {
-        if (j == i) continue;
-        const double dt_j = t_now_ - t_[at(j)];
-        const Vec2 rel_position{x_[at(j)] + vx_[at(j)] * dt_j + shift_x - xi,
-                                y_[at(j)] + vy_[at(j)] * dt_j + row_shift.position.y - yi};
-        const Vec2 rel_velocity{vx_[at(j)] + row_shift.velocity_x - vxi, vy_[at(j)] - vyi};
-        if (const double t = collision_time(rel_position, rel_velocity, sigma); t < best) {
-          best = t;
-          kind = EventKind::kCollision;
-          partner = j;
-        }
-      }
-    }
-  }
-  kind_[at(i)] = kind;
-  partner_[at(i)] = partner;
-  partner_count_[at(i)] = partner >= 0 ? count_[at(partner)] : 0;
-  heap_.update(i, t_now_ + best);
+  });
+  return {kind, partner, best};
+}
+
+void Simulation::predict(std::int32_t i) {
+  const Prediction next = next_event(i);
+  kind_[at(i)] = next.kind;
+  partner_[at(i)] = next.partner;
+  partner_count_[at(i)] = next.partner >= 0 ? count_[at(next.partner)] : 0;
+  heap_.update(i, t_now_ + next.delay);
+}
+
+Simulation::PartnerImage Simulation::nearest_image(double dx, double dy) const {
+  // The nearest image in the sheared frame, unambiguous because cells are at least as large as
+  // a contact pair (cell_grid.hpp).
+  const double lx = params_.length_x;
+  const double ly = params_.length_y;
+  const double s = strain();
+  const int iy = dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0);
+  ImageShift shift = frame_.image_shift(0, iy, s);
+  const double dxi = (dx + shift.position.x) - s * (dy + shift.position.y);
+  shift.position.x -= lx * std::round(dxi / lx);
+  return {iy, shift};
 }
 
 void Simulation::execute_crossing(std::int32_t i, EventKind kind) {
@@ -262,19 +249,13 @@ void Simulation::execute_crossing(std::int32_t i, EventKind kind) {
       if (++row == grid_.ny) {
         // Out through the top, in at the bottom from the image below (thesis §1.4.2).
         row = 0;
-        const ImageShift shift = frame_.image_shift(0, -1, strain());
-        x_[at(i)] += shift.position.x;
-        y_[at(i)] += shift.position.y;
-        vx_[at(i)] += shift.velocity_x;
+        enter_from_image(i, -1);
       }
       break;
     case EventKind::kCrossDown:
       if (--row < 0) {
         row = grid_.ny - 1;
-        const ImageShift shift = frame_.image_shift(0, 1, strain());
-        x_[at(i)] += shift.position.x;
-        y_[at(i)] += shift.position.y;
-        vx_[at(i)] += shift.velocity_x;
+        enter_from_image(i, 1);
       }
       break;
     default:
@@ -287,19 +268,22 @@ void Simulation::execute_crossing(std::int32_t i, EventKind kind) {
   predict(i);
 }
 
+void Simulation::enter_from_image(std::int32_t i, int image_y) {
+  const ImageShift shift = frame_.image_shift(0, image_y, strain());
+  const double vx_before = vx_[at(i)];
+  x_[at(i)] += shift.position.x;
+  y_[at(i)] += shift.position.y;
+  vx_[at(i)] += shift.velocity_x;
+  if (observers_.empty()) return;
+  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, vx_[at(i)]};
+  for (EventObserver* observer : observers_) observer->on_boundary_crossing(record);
+}
+
 bool Simulation::execute_collision(std::int32_t i, std::int32_t j) {
   advance(i);
   advance(j);
-  // The partner's image in contact: the nearest one in the sheared frame, unambiguous because
-  // cells are at least as large as a contact pair (cell_grid.hpp).
-  const double lx = params_.length_x;
-  const double ly = params_.length_y;
   const double s = strain();
-  const double dy = y_[at(j)] - y_[at(i)];
-  const int iy = dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0);
-  ImageShift shift = frame_.image_shift(0, iy, s);
-  const double dxi = (x_[at(j)] + shift.position.x - x_[at(i)]) - s * (dy + shift.position.y);
-  shift.position.x -= lx * std::round(dxi / lx);
+  const auto [iy, shift] = nearest_image(x_[at(j)] - x_[at(i)], y_[at(j)] - y_[at(i)]);
 
   const Vec2 r{x_[at(j)] + shift.position.x - x_[at(i)], y_[at(j)] + shift.position.y - y_[at(i)]};
   const Vec2 v1{vx_[at(i)], vy_[at(i)]};
@@ -336,6 +320,8 @@ bool Simulation::execute_collision(std::int32_t i, std::int32_t j) {
     record.contact_point = record.first_position + (0.5 * params_.diameter) * k_hat;
     double unused_vx = 0.0;
     frame_.wrap_into_box(record.contact_point.x, record.contact_point.y, unused_vx, s);
+    record.first_velocity_before = v1;
+    record.second_velocity_before = {v2.x - shift.velocity_x, v2.y};
     record.first_velocity_after = after.v1;
     record.second_velocity_after = {vx_[at(j)], vy_[at(j)]};
     record.contact_normal = k_hat;
@@ -363,6 +349,7 @@ StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
   const std::int64_t rebase_interval = kRebaseEventsPerParticle * params_.particles;
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
   while (true) {
+    if (interrupt_ && *interrupt_) return StopReason::kInterrupted;
     const double t_event = heap_.top_time();
     const double t_stop = until_time - clock_base_;
     const double t_realign = t_ref_ + realign_delay;
@@ -373,30 +360,47 @@ StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
         continue;
       }
       if (t_stop == kInf) return StopReason::kNoEvents;
+      // Stopping moves only the clock; the next event resets it to its own time, so a stop
+      // changes nothing in the trajectory.
       t_now_ = std::max(t_now_, t_stop);
       return StopReason::kTimeReached;
     }
     const std::int32_t i = heap_.top();
     t_now_ = t_event;
     ++events_;
+    // Re-based on a count of events alone, before any early return, so that the trajectory does
+    // not depend on where run() is stopped.
+    const bool rebase_due = ++events_since_rebase_ >= rebase_interval;
+#ifdef GRANULE_PARANOID
+    check_popped_event(i);
+#endif
     const EventKind kind = kind_[at(i)];
+    const std::int32_t j = partner_[at(i)];
+    bool collided = false;
     if (kind == EventKind::kCollision) {
-      const std::int32_t j = partner_[at(i)];
       if (count_[at(j)] != partner_count_[at(i)]) {
         predict(i);  // the partner has collided since: stale
-      } else if (execute_collision(i, j)) {
-        if (collapse_detector_.on_collision(t_now_)) {
-          collapse_ = {time(), i, j, {x_[at(i)], y_[at(i)]}};
-          return StopReason::kInelasticCollapse;
-        }
-        if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
+      } else {
+        collided = execute_collision(i, j);
       }
     } else if (kind == EventKind::kNone) {
       return StopReason::kNoEvents;  // only reachable when every time is +inf
     } else {
       execute_crossing(i, kind);
     }
-    if (++events_since_rebase_ >= rebase_interval) rebase();
+    if (rebase_due) {
+#ifdef GRANULE_PARANOID
+      check_invariants();
+#endif
+      rebase();
+    }
+    if (collided) {
+      if (collapse_detector_.on_collision(t_now_)) {
+        collapse_ = {time(), i, j, {x_[at(i)], y_[at(i)]}};
+        return StopReason::kInelasticCollapse;
+      }
+      if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <csignal>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "cells/cell_grid.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
+#include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
 #include "events/event_heap.hpp"
@@ -24,6 +26,7 @@ enum class StopReason {
   kCollisionsReached,  // the requested number of collisions
   kNoEvents,           // nothing will ever happen (all disks at rest relative to each other)
   kInelasticCollapse,  // collisions piled up in vanishing time (see CollapseDetector)
+  kInterrupted,        // the interrupt flag was raised (a signal): stopped after a whole event
 };
 
 struct CollapseReport {
@@ -33,26 +36,41 @@ struct CollapseReport {
   Vec2 position;
 };
 
+// The trajectory depends only on the initial state, the parameters and the grid: never on how
+// often run() is stopped, on observers, or on reading the state (tested, tests/validation).
 class Simulation {
  public:
-  // `state` must be free of overlaps; `clock` restores a synchronised run (restart).
+  // Start from lab positions and velocities free of overlaps; `clock` places the start on the
+  // time line of an earlier run (a restart from a snapshot frame: same physics, new round-off).
   Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
              const ClockState& clock = {});
+  // Continue bit for bit from a checkpoint written by save(); throws std::runtime_error when the
+  // archive does not fit `params` and `grid`.
+  Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
+             const std::string& prefix);
+  void save(StateArchive& archive, const std::string& prefix) const;
 
   // Advance until the absolute time `until_time` or until `until_collisions` collisions have
-  // been executed since the restitution was switched on, whichever comes first.
+  // been executed since the restitution was switched on, whichever comes first.  Returns after a
+  // whole event, so the engine can be saved or read at once.
   StopReason run(double until_time, std::int64_t until_collisions);
+  // run() checks `*flag` before each event and stops with kInterrupted when it is non-zero
+  // (signal handlers set it); nullptr switches the check off.
+  void set_interrupt_flag(const volatile std::sig_atomic_t* flag) { interrupt_ = flag; }
 
-  // Bring every particle to the current time, re-base the clock, re-bin and re-predict all.
-  // Snapshots are taken here, so a restart from one continues exactly the same trajectory.
-  void synchronize();
-  // Lab positions (x ∈ [0, L_x), y ∈ [0, L_y)) and velocities at the current time; exact
-  // after synchronize(), extrapolated otherwise.
+  // Lab positions (x ∈ [0, L_x), y ∈ [0, L_y)) and velocities at the current time, extrapolated
+  // from each disk's last event without touching the engine.
   ParticleState state() const;
   ClockState clock_state() const;
 
   // Switch the restitution (the thesis's elastic pre-run ends here) and restart t and c at 0.
   void start_production(double restitution);
+
+  // Checks every invariant of the engine — no overlaps beyond round-off, each disk in the cell
+  // its position gives, lists and heap consistent, every pending event still valid and not
+  // later than a fresh prediction — and throws std::logic_error describing the first violation.
+  // O(N) with the 3×3 stencil; the GRANULE_PARANOID build runs it at every re-base.
+  void check_invariants() const;
 
   void add_observer(EventObserver* observer) { observers_.push_back(observer); }
 
@@ -72,6 +90,7 @@ class Simulation {
   double bytes_per_particle() const;
 
  private:
+  void allocate_arrays();
   void load(const ParticleState& state);
   void rebuild();
   std::int64_t collapse_window() const { return std::max<std::int64_t>(1000, params_.particles); }
@@ -79,10 +98,33 @@ class Simulation {
   void advance(std::int32_t i);
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
+  // Disk i leaves the box and comes in from the image `image_y` rows away (Lees–Edwards rule).
+  void enter_from_image(std::int32_t i, int image_y);
   // Returns true if a physical collision was executed.
   bool execute_collision(std::int32_t i, std::int32_t j);
   void realign_sheared_grid();
   std::int32_t cell_of(double x, double y) const;
+  // The earliest event of particle i from the current state (kind, partner, delay), without
+  // storing it: predict() stores it, check_invariants() compares with it.
+  struct Prediction {
+    EventKind kind;
+    std::int32_t partner;
+    double delay;
+  };
+  Prediction next_event(std::int32_t i) const;
+  // Calls visit(j, shift_x, row_shift) for every disk j ≠ i of the 3×3 block of cells around
+  // i's cell, with the image shift that brings j next to i.  The sheared frame is plainly
+  // periodic, so images across the boundaries follow from the cell offsets alone.
+  template <typename Visit>
+  void for_each_neighbour(std::int32_t i, Visit&& visit) const;
+  // The image of a partner at lab offset (dx, dy) from a disk that is in contact with it.
+  struct PartnerImage {
+    int image_y;  // −1, 0, +1: which vertical image
+    ImageShift shift;
+  };
+  PartnerImage nearest_image(double dx, double dy) const;
+  // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
+  void check_popped_event(std::int32_t i) const;
 
   SystemParams params_;
   CellGrid grid_;
@@ -104,6 +146,7 @@ class Simulation {
   CollapseDetector collapse_detector_;
   CollapseReport collapse_;
   std::vector<EventObserver*> observers_;
+  const volatile std::sig_atomic_t* interrupt_ = nullptr;
 
   double t_now_ = 0.0;       // relative to clock_base_
   double clock_base_ = 0.0;  // absolute time of t_now_ = 0
@@ -112,5 +155,39 @@ class Simulation {
   std::int64_t events_ = 0;
   std::int64_t events_since_rebase_ = 0;
 };
+
+template <typename Visit>
+void Simulation::for_each_neighbour(std::int32_t i, Visit&& visit) const {
+  const int cell = cell_[static_cast<std::size_t>(i)];
+  const int column = grid_.column_of(cell);
+  const int row = grid_.row_of(cell);
+  const double s = strain();
+  for (int dr = -1; dr <= 1; ++dr) {
+    int r = row + dr;
+    int iy = 0;
+    if (r < 0) {
+      r += grid_.ny;
+      iy = -1;
+    } else if (r >= grid_.ny) {
+      r -= grid_.ny;
+      iy = 1;
+    }
+    const ImageShift row_shift = frame_.image_shift(0, iy, s);
+    for (int dc = -1; dc <= 1; ++dc) {
+      int c = column + dc;
+      double shift_x = row_shift.position.x;
+      if (c < 0) {
+        c += grid_.nx;
+        shift_x -= params_.length_x;
+      } else if (c >= grid_.nx) {
+        c -= grid_.nx;
+        shift_x += params_.length_x;
+      }
+      for (std::int32_t j = lists_.first(grid_.index(c, r)); j != CellLists::kEnd; j = lists_.next(j)) {
+        if (j != i) visit(j, shift_x, row_shift);
+      }
+    }
+  }
+}
 
 }  // namespace granule

@@ -25,7 +25,7 @@ const ConfigSchema& schema() {
       {"run", {"until_collisions_per_particle", "until_time"}},
       {"output",
        {"every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",
-        "snapshot_every_time"}},
+        "snapshot_every_time", "checkpoint_every_seconds"}},
       {"engine", {"particles_per_cell", "cells"}},
       {"diagnostics", {"cells"}},
       {"fields", {"enabled", "cells", "every_collisions_per_particle", "every_time", "subtract_shear_profile"}},
@@ -169,6 +169,11 @@ RunConfig resolve(const toml::table& root) {
   c.snapshot_every_time = in.number("output.snapshot_every_time", kPositive);
   if (!c.snapshot_every_collisions_per_particle && !c.snapshot_every_time) c.snapshot_every_collisions_per_particle = 0.0;
 
+  // Wall time is free of the simulation's scales: a checkpoint a year apart is still a schedule.
+  c.checkpoint_every_seconds =
+      in.number("output.checkpoint_every_seconds", NumberRange{0.0, 3.2e7}, " seconds of wall time (0: at every stop)")
+          .value_or(600.0);
+
   // The engine needs about N/particles_per_cell cells, each with a 32-bit id.
   const double min_per_cell = std::max(0.1, static_cast<double>(n) / static_cast<double>(kMaxEngineCells));
   c.particles_per_cell = in.number("engine.particles_per_cell", NumberRange{min_per_cell, 20.0},
@@ -263,6 +268,7 @@ std::string to_toml(const RunConfig& c) {
   if (c.sample_every_time) out += fmt::format("every_time = {:.17g}\n", *c.sample_every_time);
   if (c.snapshot_every_collisions_per_particle) out += fmt::format("snapshot_every_collisions_per_particle = {:.17g}\n", *c.snapshot_every_collisions_per_particle);
   if (c.snapshot_every_time) out += fmt::format("snapshot_every_time = {:.17g}\n", *c.snapshot_every_time);
+  out += fmt::format("checkpoint_every_seconds = {:.17g}\n", c.checkpoint_every_seconds);
   out += fmt::format("\n[engine]\nparticles_per_cell = {:.17g}\n", c.particles_per_cell);
   if (c.engine_cells) out += fmt::format("cells = [{}, {}]\n", c.engine_cells->first, c.engine_cells->second);
   out += fmt::format("\n[diagnostics]\ncells = [{}, {}]\n", c.diagnostic_cells.first, c.diagnostic_cells.second);

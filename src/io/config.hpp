@@ -52,6 +52,7 @@ struct RunConfig {
   std::optional<double> sample_every_time;
   std::optional<double> snapshot_every_collisions_per_particle;  // 0: only the final state
   std::optional<double> snapshot_every_time;
+  double checkpoint_every_seconds = 600.0;  // wall time between checkpoints
   double particles_per_cell = 1.0;
   std::optional<std::pair<int, int>> engine_cells;
   std::pair<int, int> diagnostic_cells{0, 0};  // resolved (auto: ~20 disks per cell)

@@ -37,6 +37,17 @@ struct FieldsWriter::Handles {
   hid_t file = -1;
 };
 
+FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, bool with_collisional)
+    : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {}
+
+std::unique_ptr<FieldsWriter> FieldsWriter::reopen(const std::string& path, const FieldGrid& grid, bool with_collisional,
+                                                   std::int64_t keep_frames) {
+  std::unique_ptr<FieldsWriter> writer(new FieldsWriter(path, grid, with_collisional));
+  writer->handles_->file = reopen_frames_file(path, keep_frames);
+  writer->frames_ = keep_frames;
+  return writer;
+}
+
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
     : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {
   handles_->file = create_partial_file(path, kFormat, kFormatVersion, m.version);

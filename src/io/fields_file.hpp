@@ -34,6 +34,9 @@ struct FieldsFrame {
 class FieldsWriter {
  public:
   FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& metadata, bool with_collisional);
+  // Continue the file of an interrupted or finished run after its first `keep_frames` frames.
+  static std::unique_ptr<FieldsWriter> reopen(const std::string& path, const FieldGrid& grid, bool with_collisional,
+                                              std::int64_t keep_frames);
   ~FieldsWriter();
   FieldsWriter(const FieldsWriter&) = delete;
   FieldsWriter& operator=(const FieldsWriter&) = delete;
@@ -43,6 +46,7 @@ class FieldsWriter {
   void finish();
 
  private:
+  FieldsWriter(const std::string& path, const FieldGrid& grid, bool with_collisional);
   struct Handles;
   std::unique_ptr<Handles> handles_;
   std::string path_;

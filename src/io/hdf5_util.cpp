@@ -122,4 +122,44 @@ hid_t create_group(hid_t location, const char* name) {
   return check_id(H5Gcreate2(location, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name);
 }
 
+namespace {
+herr_t truncate_extendible(hid_t file, const char* name, const H5O_info_t* info, void* keep_frames) {
+  if (info->type != H5O_TYPE_DATASET) return 0;
+  const hid_t dataset = H5Dopen2(file, name, H5P_DEFAULT);
+  if (dataset < 0) return -1;
+  const hid_t space = H5Dget_space(dataset);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  herr_t status = rank < 0 ? -1 : 0;
+  if (rank > 0) {
+    std::vector<hsize_t> dims(static_cast<std::size_t>(rank)), max(static_cast<std::size_t>(rank));
+    H5Sget_simple_extent_dims(space, dims.data(), max.data());
+    const auto keep = *static_cast<const hsize_t*>(keep_frames);
+    if (max[0] == H5S_UNLIMITED && dims[0] != keep) {
+      if (dims[0] < keep) {
+        status = -1;  // fewer frames than the checkpoint knew of: the file is not this run's
+      } else {
+        dims[0] = keep;
+        status = H5Dset_extent(dataset, dims.data());
+      }
+    }
+  }
+  H5Sclose(space);
+  H5Dclose(dataset);
+  return status;
+}
+}  // namespace
+
+hid_t reopen_frames_file(const std::string& path, std::int64_t keep_frames) {
+  const std::string partial = path + ".partial";
+  if (!std::filesystem::exists(partial)) std::filesystem::rename(path, partial);
+  const hid_t file = check_id(H5Fopen(partial.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "opening " + partial);
+  hsize_t keep = static_cast<hsize_t>(keep_frames);
+  if (H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, truncate_extendible, &keep) < 0) {
+    H5Fclose(file);
+    throw std::runtime_error(partial + " does not hold the " + std::to_string(keep_frames) +
+                             " frames its run's checkpoint expects");
+  }
+  return file;
+}
+
 }  // namespace granule::h5

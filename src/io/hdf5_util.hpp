@@ -4,6 +4,7 @@
 
 #include <hdf5.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ std::string read_string_attribute(hid_t object, const char* name);
 hid_t create_partial_file(const std::string& path, const char* format, int format_version, const std::string& granule_version);
 // Close a file made by create_partial_file and give it its final name `path`.
 void publish_partial_file(hid_t file, const std::string& path);
+// Reopen a file of frames to continue it: `<path>.partial` if a run left one, else the published
+// `<path>`, renamed back to `<path>.partial` until it is complete again.  Every extendible
+// dataset is cut to its first `keep_frames` frames (what a checkpoint knew of).
+hid_t reopen_frames_file(const std::string& path, std::int64_t keep_frames);
 
 // An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
 hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);

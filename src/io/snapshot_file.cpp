@@ -70,14 +70,15 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
   check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path + ".partial");
 }
 
-SnapshotWriter::SnapshotWriter(const std::string& path) : handles_(std::make_unique<Handles>()), path_(path) {
-  const SnapshotRead last = read_snapshot(path);
-  particles_ = last.metadata.system.particles;
-  tc_ = last.metadata.system.tc_duration > 0.0;
-  frames_ = last.frames;
-  const std::string partial = path + ".partial";
-  std::filesystem::copy_file(path, partial, std::filesystem::copy_options::overwrite_existing);
-  handles_->file = check_id(H5Fopen(partial.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "opening " + partial);
+std::unique_ptr<SnapshotWriter> SnapshotWriter::reopen(const std::string& path, std::int64_t keep_frames) {
+  std::unique_ptr<SnapshotWriter> writer(new SnapshotWriter());
+  writer->handles_ = std::make_unique<Handles>();
+  writer->path_ = path;
+  writer->handles_->file = reopen_frames_file(path, keep_frames);
+  writer->particles_ = read_attribute<std::int64_t>(writer->handles_->file, "particles", H5T_NATIVE_INT64);
+  writer->tc_ = read_attribute<double>(writer->handles_->file, "tc_duration", H5T_NATIVE_DOUBLE) > 0.0;
+  writer->frames_ = keep_frames;
+  return writer;
 }
 
 SnapshotWriter::~SnapshotWriter() {

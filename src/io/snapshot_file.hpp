@@ -31,9 +31,9 @@ class SnapshotWriter {
  public:
   // Starts `path`.partial (replacing any earlier partial file).  Throws std::runtime_error.
   SnapshotWriter(const std::string& path, const SnapshotMetadata& metadata);
-  // Continue an existing finished file (restart): frames are appended to a copy at
-  // `path`.partial, renamed over `path` by finish().
-  explicit SnapshotWriter(const std::string& path);
+  // Continue the file of an interrupted or finished run after its first `keep_frames` frames
+  // (hdf5_util.hpp, reopen_frames_file).
+  static std::unique_ptr<SnapshotWriter> reopen(const std::string& path, std::int64_t keep_frames);
   ~SnapshotWriter();
   SnapshotWriter(const SnapshotWriter&) = delete;
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
@@ -44,6 +44,7 @@ class SnapshotWriter {
   void finish();
 
  private:
+  SnapshotWriter() = default;
   struct Handles;
   std::unique_ptr<Handles> handles_;
   std::string path_;

@@ -86,4 +86,18 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   return out;
 }
 
+void GlobalDiagnostics::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put_scalar(prefix + "impulse_sum", impulse_sum_);
+  archive.put_scalar(prefix + "impulse_xy_sum", impulse_xy_sum_);
+  archive.put_scalar(prefix + "interval_start", interval_start_);
+  archive.put_integer(prefix + "interval_collisions", interval_collisions_);
+}
+
+void GlobalDiagnostics::restore(const StateArchive& archive, const std::string& prefix) {
+  impulse_sum_ = archive.scalar(prefix + "impulse_sum");
+  impulse_xy_sum_ = archive.scalar(prefix + "impulse_xy_sum");
+  interval_start_ = archive.scalar(prefix + "interval_start");
+  interval_collisions_ = archive.integer(prefix + "interval_collisions");
+}
+
 }  // namespace granule

@@ -10,6 +10,7 @@
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
+#include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -41,6 +42,9 @@ class GlobalDiagnostics final : public EventObserver {
   DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions);
   // Forget the open interval's collisions (e.g. after the elastic pre-run).
   void restart_interval(double t, std::int64_t collisions);
+  // The open interval (a checkpoint).
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
   SystemParams params_;

@@ -4,7 +4,8 @@
 // per particle from round-off alone.  The comparison is therefore made event by event from the
 // engine's own state: before each of ≥ 10^4 collisions the reference predicts, from the
 // engine's configuration, which pair collides next and when; the engine must execute exactly
-// that pair at that time (to 1e-9), across periodic and Lees–Edwards boxes, densities and seeds.
+// that pair at that time (to 1e-9), across periodic and Lees–Edwards boxes, densities and seeds,
+// and leave both disks with the velocities the reference's own collision rule gives.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,6 +62,17 @@ TEST_P(EngineVsBruteForce, SameNextCollisionEveryTime) {
     const int a = std::min(recorder.last.first, recorder.last.second);
     const int b = std::max(recorder.last.first, recorder.last.second);
     ASSERT_NEAR(recorder.last.time, t + expected.delay, tolerance) << "collision " << n;
+    const CollisionRecord& r = recorder.last;
+    const auto after = oracle::brute_force_collide(p, state, t, r.first, r.second, r.time - t, r.restitution);
+    double speed = 0.0;
+    for (double v : {r.first_velocity_before.x, r.first_velocity_before.y, r.second_velocity_before.x, r.second_velocity_before.y}) {
+      speed = std::max(speed, std::abs(v));
+    }
+    ASSERT_NEAR(r.first_velocity_after.x, after.v1x, 1e-9 * speed) << "collision " << n;
+    ASSERT_NEAR(r.first_velocity_after.y, after.v1y, 1e-9 * speed) << "collision " << n;
+    ASSERT_NEAR(r.second_velocity_after.x, after.v2x, 1e-9 * speed) << "collision " << n;
+    ASSERT_NEAR(r.second_velocity_after.y, after.v2y, 1e-9 * speed) << "collision " << n;
+    EXPECT_EQ(r.restitution, p.restitution);
     if (expected.runner_up_delay - expected.delay < tolerance) {
       ++ties;  // two collisions at the same time to 1e-9: either order is correct
       continue;

@@ -41,7 +41,6 @@ TEST(F1ElasticEquilibrium, MaxwellianIsRecovered) {
   for (int k = 0; k < 50; ++k) {
     collisions += p.particles;  // one collision per particle between snapshots, as in §5.2
     sim.run(inf, collisions);
-    sim.synchronize();
     sample_configuration(sim.state(), frame, sampling, windows);
   }
   F1Options options;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "cells/cell_grid.hpp"
@@ -30,10 +31,34 @@ TEST(InelasticCollapse, DetectedWithoutTcAndAvoidedWithIt) {
   const StopReason reason = plain.run(kInf, 400L * 2000);
   ASSERT_EQ(reason, StopReason::kInelasticCollapse) << "c reached " << plain.collisions_per_particle();
   EXPECT_GE(plain.collapse().first, 0);
+  EXPECT_GE(plain.collapse().second, 0);
+  std::printf("collapse without TC at c = %.4g, t = %.9g\n", plain.collisions_per_particle(), plain.time());
 
-  // t_c far below the initial mean free time (~1e-2 here).
+  // The same system with t_c far below the initial mean free time (~1e-2 here) runs well past the
+  // point where the plain one collapsed, and its clock keeps moving.
   Simulation tc = make(1e-7);
-  EXPECT_EQ(tc.run(kInf, 400L * 200), StopReason::kCollisionsReached);
+  const std::int64_t beyond = 3 * plain.collisions();
+  EXPECT_EQ(tc.run(kInf, beyond), StopReason::kCollisionsReached);
+  EXPECT_GT(tc.time(), plain.time());
+  const double t_then = tc.time();
+  EXPECT_EQ(tc.run(kInf, beyond + 400L * 10), StopReason::kCollisionsReached);
+  EXPECT_GT(tc.time(), t_then);
+}
+
+// The detector must not depend on how the run is driven: stopping every 0.1 collisions per
+// particle (as frequent outputs do) detects the collapse at exactly the same collision.
+TEST(InelasticCollapse, DetectedAlikeWhenStoppedEveryTenthCollisionPerParticle) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Simulation reference = make(0.0);
+  ASSERT_EQ(reference.run(kInf, 400L * 2000), StopReason::kInelasticCollapse);
+  Simulation stopped = make(0.0);
+  StopReason reason = StopReason::kCollisionsReached;
+  for (std::int64_t target = 40; reason == StopReason::kCollisionsReached && target <= 400L * 2000; target += 40) {
+    reason = stopped.run(kInf, target);
+  }
+  EXPECT_EQ(reason, StopReason::kInelasticCollapse);
+  EXPECT_EQ(stopped.collisions(), reference.collisions());
+  EXPECT_EQ(stopped.time(), reference.time());
 }
 
 }  // namespace

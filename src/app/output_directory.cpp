@@ -1,0 +1,109 @@
+#include "app/output_directory.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "app/exit_codes.hpp"
+
+namespace granule::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Everything a run writes (README.md, "Outputs"), with the temporary names of atomic writes.
+const std::vector<std::string>& run_output_names() {
+  static const std::vector<std::string> names = {
+      "config.toml", "timeseries.csv", "summary.json", "snapshots.h5", "fields.h5", "collisions.h5",
+      "checkpoint.h5", "impact_parameters.csv", "free_paths.csv", "configuration.png"};
+  return names;
+}
+
+void remove_outputs(const std::string& out, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    for (const char* suffix : {"", ".partial", ".tmp"}) {
+      std::error_code error;
+      fs::remove(fs::path(out) / (name + suffix), error);
+      if (error) throw CommandFailure{kExitIoError, fmt::format("cannot remove {}/{}{}: {}", out, name, suffix, error.message())};
+    }
+  }
+}
+
+// Available memory: /proc/meminfo's MemAvailable, or the cgroup limit if that is smaller.
+double available_bytes() {
+  double available = 0.0;
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string key; meminfo >> key;) {
+    double kib = 0.0;
+    meminfo >> kib;
+    if (key == "MemAvailable:") available = kib * 1024.0;
+    meminfo.ignore(256, '\n');
+  }
+  std::ifstream limit("/sys/fs/cgroup/memory.max");
+  double cgroup = 0.0;
+  if (limit >> cgroup && cgroup > 0.0 && (available == 0.0 || cgroup < available)) available = cgroup;
+  return available;
+}
+
+}  // namespace
+
+void prepare_new_output_directory(const std::string& out, bool force) {
+  std::error_code error;
+  const fs::file_status status = fs::status(out, error);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    throw CommandFailure{kExitBadInput, fmt::format("--out {} exists and is not a directory", out)};
+  }
+  if (fs::is_directory(status) && !fs::is_empty(out, error)) {
+    if (!force) {
+      throw CommandFailure{kExitBadInput,
+                           fmt::format("--out {} already holds files; give another directory, --force to replace the "
+                                       "outputs of the run in it, or --resume {} to continue that run", out, out)};
+    }
+    remove_outputs(out, run_output_names());
+  }
+  fs::create_directories(out, error);
+  if (error) throw CommandFailure{kExitIoError, fmt::format("cannot create the output directory {}: {}", out, error.message())};
+  // Root passes permission checks, a read-only mount does not: try a real write.
+  const fs::path probe = fs::path(out) / ".granule-write-probe";
+  {
+    std::ofstream file(probe);
+    file << "probe\n";
+    file.flush();
+    if (!file) throw CommandFailure{kExitIoError, fmt::format("cannot write into the output directory {}", out)};
+  }
+  fs::remove(probe, error);
+}
+
+void remove_end_of_run_outputs(const std::string& out) {
+  remove_outputs(out, {"summary.json", "collisions.h5", "impact_parameters.csv", "free_paths.csv", "configuration.png"});
+}
+
+std::string first_physics_override(const std::vector<std::string>& overrides) {
+  for (const std::string& assignment : overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    if (key.rfind("run.", 0) != 0 && key.rfind("output.", 0) != 0) return key;
+  }
+  return {};
+}
+
+void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
+  // Measured peaks (granule bench, /usr/bin/time): the engine ~93 B per disk with the TC model,
+  // a lab-frame copy of the state for each output (32 B) and its file buffer (32 B), a checkpoint
+  // being written (~100 B), initial placement and free paths (≤ 64 B); per cell of a measurement
+  // grid ~40 doubles.
+  const auto n = static_cast<double>(config.system.particles);
+  const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
+                             static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
+  const double needed = 320.0 * n + 4.0 * grid.cell_count() + 40.0 * 8.0 * field_cells;
+  const double available = available_bytes();
+  if (available > 0.0 && needed > available) {
+    throw CommandFailure{kExitOutOfMemory,
+                         fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
+                                     config.system.particles, needed / (1 << 30), available / (1 << 30))};
+  }
+}
+
+}  // namespace granule::app

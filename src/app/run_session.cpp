@@ -1,0 +1,237 @@
+#include "app/run_session.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "granule/version.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/timeseries_csv.hpp"
+
+namespace granule::app {
+
+namespace {
+
+// The time-series columns kept in a checkpoint, one array each.
+template <typename Sample, typename Visit>
+void for_each_sample_field(Sample& s, Visit&& visit) {
+  visit("t", s.t);
+  visit("c", s.c);
+  visit("kinetic_energy", s.kinetic_energy);
+  visit("temperature", s.temperature);
+  visit("temperature_global", s.temperature_global);
+  visit("flatness", s.flatness);
+  visit("asymmetry_x", s.asymmetry_x);
+  visit("asymmetry_y", s.asymmetry_y);
+  visit("pressure_kinetic", s.pressure_kinetic);
+  visit("pressure_collisional", s.pressure_collisional);
+  visit("shear_stress_kinetic", s.shear_stress_kinetic);
+  visit("shear_stress_collisional", s.shear_stress_collisional);
+  visit("collision_rate", s.collision_rate);
+}
+
+std::int64_t collisions_for(const RunConfig& config, std::optional<double> c) {
+  return c ? std::llround(*c * static_cast<double>(config.system.particles)) : kNoLimit;
+}
+
+}  // namespace
+
+RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial)
+    : config_(config), grid_(grid), out_(std::move(out)) {
+  // The elastic pre-run of thesis §1.4.2; the restitution is switched on when it ends.
+  SystemParams elastic = config.system;
+  elastic.restitution = 1.0;
+  sim_ = std::make_unique<Simulation>(elastic, grid, initial);
+  equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
+  until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
+  until_time_ = config.until_time.value_or(kInf);
+}
+
+RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint)
+    : config_(config), grid_(grid), out_(std::move(out)) {
+  sim_ = std::make_unique<Simulation>(config.system, grid, checkpoint, "engine/");
+  equilibrate_collisions_ = checkpoint.integer("run/equilibrate_collisions");
+  earlier_wall_seconds_ = checkpoint.scalar("run/wall_seconds");
+  segment_start_collisions_ = sim_->collisions();
+  until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
+  until_time_ = config.until_time.value_or(kInf);
+  if (checkpoint.integer("run/in_production") != 0) restore_production(checkpoint);
+}
+
+void RunSession::start_production() {
+  const SystemParams& system = config_.system;
+  sim_->start_production(system.restitution);
+  segment_start_collisions_ = 0;
+  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
+  sim_->add_observer(diagnostics_.get());
+  diagnostics_->restart_interval(sim_->time(), sim_->collisions());
+  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions()));
+  snapshots_ = std::make_unique<SnapshotWriter>(
+      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.area_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
+                                               config_.seed, kVersion});
+  append_snapshot();
+  measurements_ = std::make_unique<RunMeasurements>(config_, out_);
+  measurements_->start(*sim_);
+  sampling_ = Schedule{config_.sample_every_collisions_per_particle, config_.sample_every_time};
+  snapshotting_ = Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
+  sampling_.start(system.particles);
+  snapshotting_.start(system.particles);
+}
+
+void RunSession::restore_production(const StateArchive& archive) {
+  const SystemParams& system = config_.system;
+  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
+  diagnostics_->restore(archive, "diagnostics/");
+  sim_->add_observer(diagnostics_.get());
+  const std::size_t rows = archive.get<double>("run/samples/t").size();
+  samples_.assign(rows, {});
+  for (std::size_t k = 0; k < rows; ++k) {
+    for_each_sample_field(samples_[k], [&](const char* name, double& value) {
+      value = archive.get_sized<double>(std::string("run/samples/") + name, rows)[k];
+    });
+  }
+  sampling_ = Schedule{config_.sample_every_collisions_per_particle, config_.sample_every_time};
+  snapshotting_ = Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
+  sampling_.start(system.particles);
+  snapshotting_.start(system.particles);
+  sampling_.restore(archive, "run/sampling/");
+  snapshotting_.restore(archive, "run/snapshotting/");
+  // A run extended past its old end has new run.* limits: the schedules continue regardless.
+  snapshots_ = SnapshotWriter::reopen(out_ + "/snapshots.h5", archive.integer("run/snapshot_frames"));
+  last_snapshot_events_ = archive.integer("run/last_snapshot_events");
+  measurements_ = std::make_unique<RunMeasurements>(config_, out_);
+  measurements_->resume(*sim_, archive, "measurements/");
+  // What the interrupted segment wrote after its checkpoint is not part of this run any more.
+  write_timeseries();
+}
+
+void RunSession::save(StateArchive& archive) const {
+  sim_->save(archive, "engine/");
+  archive.put_integer("run/equilibrate_collisions", equilibrate_collisions_);
+  archive.put_scalar("run/wall_seconds", earlier_wall_seconds_ + progress_.seconds_since_start());
+  archive.put_integer("run/in_production", in_production() ? 1 : 0);
+  if (!in_production()) return;
+  diagnostics_->save(archive, "diagnostics/");
+  const DiagnosticsSample layout;
+  for_each_sample_field(layout, [&](const char* name, const double&) {
+    std::vector<double> column;
+    column.reserve(samples_.size());
+    for (const DiagnosticsSample& s : samples_) {
+      for_each_sample_field(s, [&](const char* field, const double& value) {
+        if (std::string_view(field) == name) column.push_back(value);
+      });
+    }
+    archive.put(std::string("run/samples/") + name, std::move(column));
+  });
+  sampling_.save(archive, "run/sampling/");
+  snapshotting_.save(archive, "run/snapshotting/");
+  archive.put_integer("run/snapshot_frames", snapshots_->frames());
+  archive.put_integer("run/last_snapshot_events", last_snapshot_events_);
+  measurements_->save(archive, "measurements/");
+}
+
+void RunSession::write_checkpoint() {
+  StateArchive archive;
+  save(archive);
+  if (in_production()) write_timeseries();  // the rows on disk include every row of the checkpoint
+  granule::write_checkpoint(out_ + "/checkpoint.h5", archive, kVersion);
+  last_checkpoint_wall_ = progress_.seconds_since_start();
+}
+
+void RunSession::append_snapshot() {
+  last_snapshot_events_ = sim_->events();
+  snapshots_->append({sim_->state(), sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(), sim_->strain()});
+}
+
+void RunSession::take_sample() {
+  const ParticleState state = sim_->state();
+  samples_.push_back(diagnostics_->sample(state, sim_->time(), sim_->collisions()));
+  measurements_->on_sample(state, sim_->collisions());
+}
+
+void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_, ""); }
+
+void RunSession::write_due_outputs() {
+  if (snapshotting_.due(*sim_)) {
+    append_snapshot();
+    snapshotting_.advance(*sim_);
+  }
+  if (sampling_.due(*sim_)) {
+    take_sample();
+    sampling_.advance(*sim_);
+    const double now = progress_.seconds_since_start();
+    if (now - last_csv_wall_ > 10.0) {  // keep the file current on long runs
+      write_timeseries();
+      last_csv_wall_ = now;
+    }
+  }
+  measurements_->after_step(*sim_, false);
+}
+
+void RunSession::report_progress() {
+  const double fraction =
+      std::max(until_collisions_ == kNoLimit ? 0.0 : static_cast<double>(sim_->collisions()) / static_cast<double>(until_collisions_),
+               std::isfinite(until_time_) ? sim_->time() / until_time_ : 0.0);
+  const double elapsed = progress_.seconds_since_start();
+  const double done = static_cast<double>(sim_->collisions() - segment_start_collisions_);
+  progress_.update(in_production() ? std::min(1.0, fraction) : 0.0, sim_->collisions_per_particle(), sim_->time(),
+                   elapsed > 0.0 ? done / elapsed : 0.0);
+}
+
+StopReason RunSession::run(const volatile std::sig_atomic_t* interrupt) {
+  sim_->set_interrupt_flag(interrupt);
+  const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);  // progress granularity
+  while (true) {
+    StopReason reason;
+    if (!in_production()) {
+      reason = sim_->run(kInf, std::min(equilibrate_collisions_, sim_->collisions() + chunk));
+      if (reason == StopReason::kInterrupted) return reason;
+      if (reason == StopReason::kNoEvents) {
+        fmt::print(stderr, "granule run: the elastic pre-run has no events (all disks at rest?)\n");
+      }
+      if (reason == StopReason::kNoEvents || sim_->collisions() >= equilibrate_collisions_) start_production();
+    } else {
+      const std::int64_t target = std::min({until_collisions_, sampling_.next_collisions, snapshotting_.next_collisions,
+                                            measurements_->next_collisions(), sim_->collisions() + chunk});
+      reason = sim_->run(std::min({until_time_, sampling_.next_time, snapshotting_.next_time, measurements_->next_time()}),
+                         target);
+      if (reason == StopReason::kInterrupted) return reason;
+      write_due_outputs();
+      if (reason == StopReason::kInelasticCollapse || reason == StopReason::kNoEvents ||
+          sim_->collisions() >= until_collisions_ || sim_->time() >= until_time_) {
+        return reason;
+      }
+    }
+    if (progress_.seconds_since_start() - last_checkpoint_wall_ >= config_.checkpoint_every_seconds) write_checkpoint();
+    report_progress();
+  }
+}
+
+nlohmann::json RunSession::finish(StopReason reason) {
+  progress_.finish();
+  write_checkpoint();
+  // The end-of-run outputs, after the checkpoint: a continuation drops them again.
+  if (in_production()) {
+    if (last_snapshot_events_ != sim_->events()) append_snapshot();
+    if (samples_.back().c != sim_->collisions_per_particle() || samples_.back().t != sim_->time()) take_sample();
+    measurements_->after_step(*sim_, true);
+    snapshots_->finish();
+    write_timeseries();
+  }
+  const double segment_seconds = progress_.seconds_since_start();
+  const RunFacts facts{earlier_wall_seconds_ + segment_seconds, segment_seconds, sim_->collisions() - segment_start_collisions_,
+                       equilibrate_collisions_, snapshot_frames()};
+  nlohmann::json summary = summary_json(config_, *sim_, grid_, reason, facts, samples_);
+  if (measurements_) summary["measurements"] = measurements_->finish(*sim_);
+  for (const Schedule* schedule : {&sampling_, &snapshotting_}) {
+    if (schedule->rounded_up) {
+      summary["warnings"].push_back("a time interval was below one ulp of the clock and was rounded up");
+    }
+  }
+  write_file_atomically(out_ + "/summary.json", summary.dump(2) + "\n");
+  return summary;
+}
+
+}  // namespace granule::app

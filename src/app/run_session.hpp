@@ -1,0 +1,81 @@
+// One `granule run` in its output directory: the engine, the elastic pre-run of thesis §1.4.2,
+// the time series, snapshots and measurements, driven by one loop; checkpoints of all of it.
+//
+// A checkpoint holds everything that decides what the run writes from then on (engine, open
+// measurement intervals, schedules, the time-series rows so far, how many frames each file has),
+// so a run continued from one writes, bit for bit, what the uninterrupted run would have written.
+// Checkpoints are taken every `output.checkpoint_every_seconds` of wall time, on SIGINT/SIGTERM,
+// and when the run ends — always before the extra end-of-run outputs (a last snapshot and row),
+// which a continuation drops together with anything else written after its checkpoint.
+#pragma once
+
+#include <csignal>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/progress.hpp"
+#include "app/run_measurements.hpp"
+#include "app/run_summary.hpp"
+#include "app/schedule.hpp"
+#include "engine/simulation.hpp"
+#include "io/config.hpp"
+#include "io/snapshot_file.hpp"
+#include "observers/global_diagnostics.hpp"
+
+namespace granule::app {
+
+class RunSession {
+ public:
+  // A new run into the existing, empty directory `out` from the initial state of §1.4.2.
+  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial);
+  // A run continued from its checkpoint in `out`.
+  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint);
+
+  // Run until the configured end, collapse, no events, or `*interrupt` (set by a signal).
+  StopReason run(const volatile std::sig_atomic_t* interrupt);
+  // The checkpoint, the end-of-run outputs and summary.json.  Returns the summary.
+  nlohmann::json finish(StopReason reason);
+
+  const Simulation& simulation() const { return *sim_; }
+  const std::vector<DiagnosticsSample>& samples() const { return samples_; }
+  std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
+  bool measurements_enabled() const { return measurements_ != nullptr; }
+
+ private:
+  bool in_production() const { return diagnostics_ != nullptr; }
+  void start_production();
+  // Outputs due at the present stop: samples, snapshots, measurements.
+  void write_due_outputs();
+  void append_snapshot();
+  void take_sample();
+  void write_timeseries() const;
+  void write_checkpoint();
+  void save(StateArchive& archive) const;
+  void restore_production(const StateArchive& archive);
+  void report_progress();
+
+  RunConfig config_;
+  CellGrid grid_;
+  std::string out_;
+  std::unique_ptr<Simulation> sim_;
+  std::int64_t equilibrate_collisions_ = 0;
+  std::int64_t until_collisions_ = kNoLimit;
+  double until_time_ = kInf;
+
+  // Production (after the pre-run).
+  std::unique_ptr<GlobalDiagnostics> diagnostics_;
+  std::vector<DiagnosticsSample> samples_;
+  Schedule sampling_, snapshotting_;
+  std::unique_ptr<SnapshotWriter> snapshots_;
+  std::int64_t last_snapshot_events_ = -1;
+  std::unique_ptr<RunMeasurements> measurements_;
+
+  Progress progress_;
+  double earlier_wall_seconds_ = 0.0;  // of the segments before a resume
+  std::int64_t segment_start_collisions_ = 0;
+  double last_checkpoint_wall_ = 0.0;
+  double last_csv_wall_ = 0.0;
+};
+
+}  // namespace granule::app

@@ -1,0 +1,103 @@
+"""A run killed at random moments (SIGKILL, SIGINT, SIGTERM) and resumed each time from its checkpoint
+ends with files identical, dataset by dataset and byte by byte, to the run that was never
+interrupted; the trajectory does not depend on output cadence; --resume refuses physics changes;
+an output directory in use is refused without --force."""
+import csv
+import random
+import signal
+import subprocess
+import time
+
+import h5py
+import numpy as np
+
+from harness import GRANULE, WORK, check, finish, granule
+
+SYSTEM = ["--set", "system.particles=1500", "--set", "boundary.kind=lees-edwards", "--set", "boundary.shear_velocity=50",
+          "--set", "system.restitution=0.9", "--set", "system.tc_duration=1e-7", "--set", "collisions.free_paths=true",
+          "--set", "run.until_collisions_per_particle=150"]
+OUTPUTS = ["--set", "output.snapshot_every_collisions_per_particle=10", "--set", "output.checkpoint_every_seconds=0"]
+
+
+def datasets(path):
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
+    return out
+
+
+def same_h5(a, b, prefix=""):
+    da, db = datasets(a), datasets(b)
+    keys = [k for k in da if k.startswith(prefix)]
+    differing = [k for k in keys if k not in db or da[k].shape != db[k].shape or not np.array_equal(da[k], db[k], equal_nan=True)]
+    return len(keys) > 0 and not differing, differing[:5]
+
+
+reference = WORK / "reference"
+result = granule("run", "--out", reference, *SYSTEM, *OUTPUTS)
+check(result.returncode == 0, f"reference run: {result.stderr}")
+
+# Kill the same run again and again at random moments; resume after each kill.
+rng = random.Random(12)
+killed = WORK / "killed"
+kills = {"SIGKILL": 0, "SIGINT": 0, "SIGTERM": 0}
+command = [GRANULE, "run", "--out", str(killed), *SYSTEM, *OUTPUTS]
+for attempt in range(40):
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    time.sleep(rng.uniform(0.15, 0.6))
+    name = rng.choice(list(kills))
+    process.send_signal(getattr(signal, name))
+    code = process.wait(timeout=120)
+    if code == 0:
+        break  # it finished before the signal arrived
+    kills[name] += 1
+    expected = {"SIGKILL": -signal.SIGKILL, "SIGINT": 130, "SIGTERM": 143}[name]
+    check(code == expected, f"{name}: exit {code}, expected {expected}: {process.stderr.read()[-300:]}")
+    if name != "SIGKILL":
+        summary = (killed / "summary.json").read_text()
+        check('"interrupted"' in summary, "an interrupted run says so in summary.json")
+    if not (killed / "checkpoint.h5").exists():
+        command = [GRANULE, "run", "--force", "--out", str(killed), *SYSTEM, *OUTPUTS]  # killed before its first checkpoint
+    else:
+        command = [GRANULE, "run", "--resume", str(killed)]
+print(f"kills: {kills}")
+check(sum(kills.values()) >= 5, f"at least five interruptions: {kills}")
+for name in ("snapshots.h5", "fields.h5", "collisions.h5"):
+    same, differing = same_h5(reference / name, killed / name)
+    check(same, f"{name} of the interrupted run equals the reference: differing {differing}")
+check((reference / "timeseries.csv").read_bytes() == (killed / "timeseries.csv").read_bytes(), "time series identical")
+same, differing = same_h5(reference / "checkpoint.h5", killed / "checkpoint.h5", "engine/")
+check(same, f"final engine state identical: {differing}")
+rows = list(csv.DictReader(open(killed / "timeseries.csv")))
+check(len(rows) == 301, f"one row per 0.5 c from 0 to 150: {len(rows)}")
+
+# Another output cadence (and no fields), same trajectory.
+cadence = WORK / "cadence"
+result = granule("run", "--out", cadence, *SYSTEM, "--set", "output.snapshot_every_collisions_per_particle=3",
+                 "--set", "output.every_collisions_per_particle=0.1", "--set", "fields.enabled=false")
+check(result.returncode == 0, f"cadence run: {result.stderr}")
+same, differing = same_h5(reference / "checkpoint.h5", cadence / "checkpoint.h5", "engine/")
+check(same, f"the engine state at c = 150 does not depend on output cadence: {differing}")
+
+# Extending a finished run equals running longer at once.
+longer = WORK / "longer"
+result = granule("run", "--out", longer, *SYSTEM, *OUTPUTS, "--set", "run.until_collisions_per_particle=180")
+check(result.returncode == 0, f"longer run: {result.stderr}")
+result = granule("run", "--resume", reference, "--set", "run.until_collisions_per_particle=180")
+check(result.returncode == 0, f"extension: {result.stderr}")
+for name in ("snapshots.h5", "fields.h5", "collisions.h5"):
+    same, differing = same_h5(longer / name, reference / name)
+    check(same, f"{name} of the extended run equals the longer run: {differing}")
+
+# A resumed run keeps its physics; a directory in use is not overwritten silently.
+result = granule("run", "--resume", reference, "--set", "system.restitution=0.5")
+check(result.returncode == 2 and "system.restitution" in result.stderr, f"physics change refused: {result.stderr}")
+result = granule("run", "--out", reference, *SYSTEM)
+check(result.returncode == 2 and "--force" in result.stderr, f"directory in use refused: {result.stderr}")
+(WORK / "a_file").write_text("x")
+result = granule("run", "--out", WORK / "a_file", *SYSTEM)
+check(result.returncode == 2 and "not a directory" in result.stderr, f"--out is a file: {result.stderr}")
+result = granule("run", "--out", reference, "--force", "--set", "system.particles=300", "--set", "run.until_collisions_per_particle=1")
+check(result.returncode == 0, f"--force: {result.stderr}")
+
+finish()
