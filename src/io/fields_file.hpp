@@ -1,7 +1,8 @@
 // HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
 // instantaneous fields of the configuration, the fields averaged over the interval since the
 // previous frame (with the collisional stress (1.6) when collisions were observed), and the
-// streamwise profiles.  Written to `<name>.partial`, renamed by finish().
+// streamwise profiles.  Written to `<name>.partial`, renamed by finish(); every failure throws
+// IoError and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/collisional_stress.hpp"
+#include "io/hdf5_util.hpp"
 
 namespace granule {
 
@@ -34,7 +36,10 @@ struct FieldsFrame {
 class FieldsWriter {
  public:
   FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& metadata, bool with_collisional);
-  ~FieldsWriter();
+  // Continues `path` (resume) keeping its first `keep_frames` frames (negative: every complete
+  // frame), as SnapshotWriter does; grid and collisional stress as in the file.
+  FieldsWriter(const std::string& path, std::int64_t keep_frames);
+  ~FieldsWriter();  // a writer not finished leaves `path`.partial, closed
   FieldsWriter(const FieldsWriter&) = delete;
   FieldsWriter& operator=(const FieldsWriter&) = delete;
 
@@ -47,8 +52,11 @@ class FieldsWriter {
   std::unique_ptr<Handles> handles_;
   std::string path_;
   FieldGrid grid_;
-  bool with_collisional_;
+  bool with_collisional_ = false;
   std::int64_t frames_ = 0;
 };
+
+// The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y).
+FieldGrid read_fields_grid(hid_t file);
 
 }  // namespace granule
