@@ -33,14 +33,9 @@ void for_each_scalar(Frame& f, Visit&& visit) {
 
 }  // namespace
 
-struct FieldsWriter::Handles {
-  Handle file;
-};
-
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
-    : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {
-  handles_->file = Handle(create_partial_file(path, kFormat, kFormatVersion, m.version), H5Fclose);
-  const hid_t f = handles_->file.get();
+    : file_(path, kFormat, kFormatVersion, m.version), grid_(grid), with_collisional_(with_collisional) {
+  const hid_t f = file_.get();
   write_string_attribute(f, "source", m.source);
   write_string_attribute(f, "boundary", m.boundary);
   write_attribute(f, "nx", H5T_NATIVE_INT, &grid.nx);
@@ -73,25 +68,19 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   for (const char* name : {"density", "velocity_x", "velocity_y", "temperature"}) {
     add_frames(f, (std::string("/profiles/") + name).c_str(), H5T_NATIVE_DOUBLE, rows);
   }
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), f, "flush", "");
+  file_.flush();
 }
 
 FieldsWriter::FieldsWriter(const std::string& path, std::int64_t keep_frames)
-    : handles_(std::make_unique<Handles>()), path_(path) {
-  ReopenedFile reopened = reopen_partial_file(path, kFormat, keep_frames);
-  handles_->file = std::move(reopened.file);
-  frames_ = reopened.frames;
-  grid_ = read_fields_grid(handles_->file.get());
-  const htri_t collisional = H5Lexists(handles_->file.get(), "/average/collisional_xx", H5P_DEFAULT);
-  check(collisional, handles_->file.get(), "look for", "/average/collisional_xx");
+    : file_(path, kFormat, keep_frames), grid_(read_fields_grid(file_.get())) {
+  const htri_t collisional = H5Lexists(file_.get(), "/average/collisional_xx", H5P_DEFAULT);
+  check(collisional, file_.get(), "look for", "/average/collisional_xx");
   with_collisional_ = collisional > 0;
 }
 
-FieldsWriter::~FieldsWriter() = default;
-
 void FieldsWriter::append(const FieldsFrame& frame) {
-  const hid_t f = handles_->file.get();
-  const auto at = static_cast<hsize_t>(frames_);
+  const hid_t f = file_.get();
+  const auto at = static_cast<hsize_t>(file_.frames());
   for_each_scalar(frame, [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); });
   append_frame(f, "/average/configurations", H5T_NATIVE_INT, &frame.configurations, at);
   for_each_field(frame.instant, [&](const char* name, const std::vector<double>& v) {
@@ -124,13 +113,7 @@ void FieldsWriter::append(const FieldsFrame& frame) {
       {"/profiles/density", &p.density}, {"/profiles/velocity_x", &p.velocity_x},
       {"/profiles/velocity_y", &p.velocity_y}, {"/profiles/temperature", &p.temperature}};
   for (const auto& [name, v] : profiles) append_frame(f, name, H5T_NATIVE_DOUBLE, v->data(), at);
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), f, "flush", "");
-  ++frames_;
-}
-
-void FieldsWriter::finish() {
-  if (handles_->file.get() < 0) return;
-  publish_partial_file(handles_->file.release(), path_);
+  file_.end_frame();
 }
 
 FieldGrid read_fields_grid(hid_t file) {

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -39,21 +38,16 @@ class FieldsWriter {
   // Continues `path` (resume) keeping its first `keep_frames` frames (negative: every complete
   // frame), as SnapshotWriter does; grid and collisional stress as in the file.
   FieldsWriter(const std::string& path, std::int64_t keep_frames);
-  ~FieldsWriter();  // a writer not finished leaves `path`.partial, closed
-  FieldsWriter(const FieldsWriter&) = delete;
-  FieldsWriter& operator=(const FieldsWriter&) = delete;
+  // A writer not finished leaves `path`.partial, closed.
 
   void append(const FieldsFrame& frame);
-  std::int64_t frames() const { return frames_; }
-  void finish();
+  std::int64_t frames() const { return file_.frames(); }
+  void finish() { file_.publish(); }
 
  private:
-  struct Handles;
-  std::unique_ptr<Handles> handles_;
-  std::string path_;
+  h5::PartialFile file_;
   FieldGrid grid_;
   bool with_collisional_ = false;
-  std::int64_t frames_ = 0;
 };
 
 // The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y).

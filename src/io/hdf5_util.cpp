@@ -329,41 +329,53 @@ std::int64_t complete_frames(const std::string& path) {
   return frames;
 }
 
-ReopenedFile reopen_partial_file(const std::string& path, const char* format, std::int64_t keep_frames) {
+PartialFile::PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version)
+    : path_(path), file_(create_partial_file(path, format, format_version, granule_version), H5Fclose) {}
+
+PartialFile::PartialFile(const std::string& path, const char* format, std::int64_t keep_frames) : path_(path) {
   const std::string partial = path + ".partial";
   const bool published = !std::filesystem::exists(partial);
   const std::string current = published ? path : partial;
-  std::int64_t frames = 0;
   {
     Handle file = open_file(current);
     if (read_string_attribute(file.get(), "format") != format) {
       throw std::invalid_argument(current + " is not a " + format + " file");
     }
-    frames = complete_frames(file.get());
+    frames_ = complete_frames(file.get());
     file.close();
   }
-  if (keep_frames > frames) {
-    throw std::invalid_argument(current + " holds " + std::to_string(frames) + " complete frames, not " +
+  if (keep_frames > frames_) {
+    throw std::invalid_argument(current + " holds " + std::to_string(frames_) + " complete frames, not " +
                                 std::to_string(keep_frames));
   }
-  if (keep_frames >= 0) frames = keep_frames;
+  if (keep_frames >= 0) frames_ = keep_frames;
   // Renamed, not copied: a resumed run must not need the disk space of a second copy.
   if (published && std::rename(path.c_str(), partial.c_str()) != 0) {
     throw io_error("cannot rename " + path + " to " + partial, errno);
   }
-  ReopenedFile reopened{Handle(open_existing(partial, H5F_ACC_RDWR), H5Fclose), frames};
-  const hid_t file = reopened.file.get();
-  for (const std::string& name : frame_datasets(file)) {
-    Handle dataset = open_dataset(file, name.c_str());
+  file_ = Handle(open_existing(partial, H5F_ACC_RDWR), H5Fclose);
+  for (const std::string& name : frame_datasets(file_.get())) {
+    Handle dataset = open_dataset(file_.get(), name.c_str());
     std::vector<hsize_t> dims = extent(dataset.get(), name.c_str());
-    if (dims[0] != static_cast<hsize_t>(frames)) {
-      dims[0] = static_cast<hsize_t>(frames);
-      check(H5Dset_extent(dataset.get(), dims.data()), file, "truncate dataset", name.c_str());
+    if (dims[0] != static_cast<hsize_t>(frames_)) {
+      dims[0] = static_cast<hsize_t>(frames_);
+      check(H5Dset_extent(dataset.get(), dims.data()), file_.get(), "truncate dataset", name.c_str());
     }
     dataset.close();
   }
-  check(H5Fflush(file, H5F_SCOPE_GLOBAL), file, "flush", "");
-  return reopened;
+  flush();
+}
+
+void PartialFile::flush() { check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), file_.get(), "flush", ""); }
+
+void PartialFile::end_frame() {
+  flush();
+  ++frames_;
+}
+
+void PartialFile::publish() {
+  if (file_.get() < 0) return;
+  publish_partial_file(file_.release(), path_);
 }
 
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data) {

@@ -84,16 +84,30 @@ std::int64_t complete_frames(hid_t file);
 // The same for the file at `path` (a `.partial` or a published file).  Throws IoError.
 std::int64_t complete_frames(const std::string& path);
 
-// Reopens a file made by create_partial_file to append frames: `<path>.partial` if it exists,
-// else the published `path` renamed back to `<path>.partial` (publish_partial_file renames it
-// again).  Every per-frame dataset is cut to its first `keep_frames` frames (keep_frames < 0:
-// the complete frames).  Throws std::invalid_argument, before renaming anything, when the file is
-// not of `format` or holds fewer complete frames than asked for; IoError when I/O fails.
-struct ReopenedFile {
-  Handle file;
-  std::int64_t frames = 0;  // frames kept
+// A file of frames written as `<path>.partial` (snapshots, fields): each frame is flushed when
+// complete, and publish() gives the file its final name.  Destroyed unpublished, it leaves
+// `<path>.partial`, closed.
+class PartialFile {
+ public:
+  // A new file, as create_partial_file.
+  PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version);
+  // Resume: reopens `<path>.partial` if it exists, else the published `path` renamed back to
+  // `<path>.partial` (not copied), and cuts every per-frame dataset to its first `keep_frames`
+  // frames (keep_frames < 0: the complete frames).  Throws std::invalid_argument, before renaming
+  // anything, when the file is not of `format` or holds fewer complete frames than asked for.
+  PartialFile(const std::string& path, const char* format, std::int64_t keep_frames);
+
+  hid_t get() const { return file_.get(); }
+  std::int64_t frames() const { return frames_; }
+  void flush();      // the file as it stands (after its layout)
+  void end_frame();  // flush and count a frame whose datasets are all written
+  void publish();    // close and rename (once; later calls do nothing)
+
+ private:
+  std::string path_;
+  Handle file_;
+  std::int64_t frames_ = 0;
 };
-ReopenedFile reopen_partial_file(const std::string& path, const char* format, std::int64_t keep_frames);
 
 // A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);

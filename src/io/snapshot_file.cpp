@@ -59,14 +59,11 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
 
 }  // namespace
 
-struct SnapshotWriter::Handles {
-  Handle file;
-};
-
 SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& m)
-    : handles_(std::make_unique<Handles>()), path_(path), particles_(m.system.particles), tc_(m.system.tc_duration > 0.0) {
-  handles_->file = Handle(create_partial_file(path, kFormat, kFormatVersion, m.version), H5Fclose);
-  const hid_t f = handles_->file.get();
+    : file_(std::make_unique<PartialFile>(path, kFormat, kFormatVersion, m.version)),
+      particles_(m.system.particles),
+      tc_(m.system.tc_duration > 0.0) {
+  const hid_t f = file_->get();
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
   const double box[2] = {m.system.length_x, m.system.length_y};
@@ -84,36 +81,31 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
     add_frames(f, name, H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
   });
   if (tc_) add_frames(f, "last_collision", H5T_IEEE_F64LE, {n});
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), f, "flush", "");
+  file_->flush();
 }
 
 SnapshotWriter::SnapshotWriter(const std::string& path, std::int64_t keep_frames)
-    : handles_(std::make_unique<Handles>()), path_(path) {
-  ReopenedFile reopened = reopen_partial_file(path, kFormat, keep_frames);
-  handles_->file = std::move(reopened.file);
-  frames_ = reopened.frames;
-  const SnapshotMetadata m = read_metadata(handles_->file.get(), path + ".partial");
+    : file_(std::make_unique<PartialFile>(path, kFormat, keep_frames)) {
+  const SnapshotMetadata m = read_metadata(file_->get(), path + ".partial");
   particles_ = m.system.particles;
   tc_ = m.system.tc_duration > 0.0;
 }
 
 SnapshotWriter::~SnapshotWriter() = default;
 
+std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
+
 void SnapshotWriter::append(const SnapshotFrame& frame) {
-  const hid_t f = handles_->file.get();
-  const auto k = static_cast<hsize_t>(frames_);
+  const hid_t f = file_->get();
+  const auto k = static_cast<hsize_t>(file_->frames());
   append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles.x, frame.particles.y).data(), k);
   append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles.vx, frame.particles.vy).data(), k);
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), f, "flush", "");
-  ++frames_;
+  file_->end_frame();
 }
 
-void SnapshotWriter::finish() {
-  if (handles_->file.get() < 0) return;
-  publish_partial_file(handles_->file.release(), path_);
-}
+void SnapshotWriter::finish() { file_->publish(); }
 
 SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
   Handle file = open_file(path);

@@ -12,6 +12,10 @@
 
 namespace granule {
 
+namespace h5 {
+class PartialFile;
+}
+
 struct SnapshotMetadata {
   SystemParams system;
   double area_fraction = 0.0;
@@ -44,15 +48,12 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   void append(const SnapshotFrame& frame);
-  std::int64_t frames() const { return frames_; }
+  std::int64_t frames() const;
   // Close and rename to the final name.
   void finish();
 
  private:
-  struct Handles;
-  std::unique_ptr<Handles> handles_;
-  std::string path_;
-  std::int64_t frames_ = 0;
+  std::unique_ptr<h5::PartialFile> file_;
   std::int64_t particles_ = 0;
   bool tc_ = false;
 };
