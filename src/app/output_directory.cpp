@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "app/exit_codes.hpp"
+#include "io/io_error.hpp"
 
 namespace granule::app {
 
@@ -27,7 +28,7 @@ void remove_outputs(const std::string& out, const std::vector<std::string>& name
     for (const char* suffix : {"", ".partial", ".tmp"}) {
       std::error_code error;
       fs::remove(fs::path(out) / (name + suffix), error);
-      if (error) throw CommandFailure{kExitIoError, fmt::format("cannot remove {}/{}{}: {}", out, name, suffix, error.message())};
+      if (error) throw IoError(fmt::format("cannot remove {}/{}{}: {}", out, name, suffix, error.message()));
     }
   }
 }
@@ -65,16 +66,18 @@ void prepare_new_output_directory(const std::string& out, bool force) {
     remove_outputs(out, run_output_names());
   }
   fs::create_directories(out, error);
-  if (error) throw CommandFailure{kExitIoError, fmt::format("cannot create the output directory {}: {}", out, error.message())};
-  // Root passes permission checks, a read-only mount does not: try a real write.
+  if (error) throw IoError(fmt::format("cannot create the output directory {}: {}", out, error.message()));
+  // Root passes permission checks, an immutable directory or a read-only mount does not: try.
   const fs::path probe = fs::path(out) / ".granule-write-probe";
+  bool written = false;
   {
     std::ofstream file(probe);
     file << "probe\n";
     file.flush();
-    if (!file) throw CommandFailure{kExitIoError, fmt::format("cannot write into the output directory {}", out)};
+    written = static_cast<bool>(file);
   }
   fs::remove(probe, error);
+  if (!written) throw IoError(fmt::format("cannot write into the output directory {}", out));
 }
 
 void remove_end_of_run_outputs(const std::string& out) {

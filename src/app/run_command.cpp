@@ -16,6 +16,7 @@
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/io_error.hpp"
 
 namespace granule::app {
 
@@ -134,6 +135,8 @@ int run(const RunOptions& options) {
     const nlohmann::json summary = session->finish(reason);
     try {
       if (session->snapshot_frames() > 0) fmt::print("picture: {}\n", render_run_picture(out));
+    } catch (const IoError&) {
+      throw;  // the disk failed: exit 4, the data files written before stay complete
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }

@@ -73,7 +73,7 @@ void RunMeasurements::resume(Simulation& sim, const StateArchive& archive, const
     interval_start_c_ = archive.scalar(prefix + "interval_start_c");
     last_fields_collisions_ = archive.integer(prefix + "last_fields_collisions");
     last_sample_collisions_ = archive.integer(prefix + "last_sample_collisions");
-    fields_writer_ = FieldsWriter::reopen(out_dir_ + "/fields.h5", grid_, true, archive.integer(prefix + "fields_frames"));
+    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", archive.integer(prefix + "fields_frames"));
   }
   if (density_) {
     density_->restore(archive, prefix + "density/");

@@ -99,7 +99,7 @@ void RunSession::restore_production(const StateArchive& archive) {
   sampling_.restore(archive, "run/sampling/");
   snapshotting_.restore(archive, "run/snapshotting/");
   // A run extended past its old end has new run.* limits: the schedules continue regardless.
-  snapshots_ = SnapshotWriter::reopen(out_ + "/snapshots.h5", archive.integer("run/snapshot_frames"));
+  snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", archive.integer("run/snapshot_frames"));
   last_snapshot_events_ = archive.integer("run/last_snapshot_events");
   measurements_ = std::make_unique<RunMeasurements>(config_, out_);
   measurements_->resume(*sim_, archive, "measurements/");
@@ -225,9 +225,13 @@ nlohmann::json RunSession::finish(StopReason reason) {
                        equilibrate_collisions_, snapshot_frames()};
   nlohmann::json summary = summary_json(config_, *sim_, grid_, reason, facts, samples_);
   if (measurements_) summary["measurements"] = measurements_->finish(*sim_);
-  for (const Schedule* schedule : {&sampling_, &snapshotting_}) {
+  for (const auto& [name, schedule] : {std::pair{"output.every_time", &sampling_}, {"output.snapshot_every_time", &snapshotting_}}) {
     if (schedule->rounded_up) {
-      summary["warnings"].push_back("a time interval was below one ulp of the clock and was rounded up");
+      summary["warnings"].push_back(fmt::format("{} is below one ulp of the clock: rounded up", name));
+    }
+    if (schedule->skipped > 0) {
+      summary["warnings"].push_back(fmt::format("{}: {} outputs skipped that fell between the same two events", name,
+                                                schedule->skipped));
     }
   }
   write_file_atomically(out_ + "/summary.json", summary.dump(2) + "\n");

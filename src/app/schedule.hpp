@@ -1,8 +1,10 @@
 // A recurring output trigger of the run loop, every `every_c` collisions per particle or every
 // `every_t` of time, counted from an origin.  Advancing jumps straight to the first trigger after
 // the present (O(1), however far the clock moved), and always lies strictly ahead, so no schedule
-// can stall the loop: a time interval below one ulp of the clock is rounded up to the next
-// representable time (and reported by `rounded_up`).
+// can stall the loop.  A time schedule fires at most once between two events: triggers before the
+// next event would repeat the same configuration, merely streamed (a cooling gas whose mean free
+// time outgrows the interval would otherwise write without end); they are skipped and counted in
+// `skipped`, and an interval below one ulp of the clock is rounded up (`rounded_up`).
 #pragma once
 
 #include <cmath>
@@ -28,6 +30,7 @@ struct Schedule {
   std::int64_t next_collisions = kNoLimit;
   double next_time = kInf;
   bool rounded_up = false;
+  std::int64_t skipped = 0;
 
   // First trigger one interval after the origin.
   void start(std::int64_t n, std::int64_t from_collisions = 0, double from_time = 0.0) {
@@ -46,10 +49,11 @@ struct Schedule {
       next_collisions = std::max(sim.collisions() + 1, origin_collisions + interval_collisions(periods + 1.0));
     }
     if (every_t && sim.time() >= next_time) {
-      next_time = origin_time + (std::floor((sim.time() - origin_time) / *every_t) + 1.0) * *every_t;
-      if (!(next_time > sim.time())) {
-        next_time = std::nextafter(sim.time(), kInf);
-        rounded_up = true;
+      next_time = trigger_after(sim.time());
+      if (const double next_event = sim.next_event_time(); next_event > next_time) {
+        const double first_after_event = trigger_after(next_event);
+        skipped += std::llround((first_after_event - next_time) / *every_t);
+        next_time = first_after_event;
       }
     }
   }
@@ -59,16 +63,27 @@ struct Schedule {
     archive.put_scalar(prefix + "origin_time", origin_time);
     archive.put_integer(prefix + "next_collisions", next_collisions);
     archive.put_scalar(prefix + "next_time", next_time);
+    archive.put_integer(prefix + "skipped", skipped);
+    archive.put_integer(prefix + "rounded_up", rounded_up ? 1 : 0);
   }
   void restore(const StateArchive& archive, const std::string& prefix) {
     origin_collisions = archive.integer(prefix + "origin_collisions");
     origin_time = archive.scalar(prefix + "origin_time");
     next_collisions = archive.integer(prefix + "next_collisions");
     next_time = archive.scalar(prefix + "next_time");
+    skipped = archive.integer(prefix + "skipped");
+    rounded_up = archive.integer(prefix + "rounded_up") != 0;
   }
 
  private:
   bool by_collisions() const { return every_c && *every_c > 0.0; }
+  // The first trigger strictly after t.
+  double trigger_after(double t) {
+    const double next = origin_time + (std::floor((t - origin_time) / *every_t) + 1.0) * *every_t;
+    if (next > t) return next;
+    rounded_up = true;
+    return std::nextafter(t, kInf);
+  }
   std::int64_t interval_collisions(double periods) const {
     return std::llround(periods * *every_c * static_cast<double>(particles));
   }

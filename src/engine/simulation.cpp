@@ -351,18 +351,23 @@ StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
   while (true) {
     if (interrupt_ && *interrupt_) return StopReason::kInterrupted;
     const double t_event = heap_.top_time();
-    const double t_stop = until_time - clock_base_;
     const double t_realign = t_ref_ + realign_delay;
-    if (std::min(t_stop, t_realign) <= t_event) {
-      if (t_realign < t_stop) {
-        t_now_ = std::max(t_now_, t_realign);
-        realign_sheared_grid();
-        continue;
-      }
-      if (t_stop == kInf) return StopReason::kNoEvents;
-      // Stopping moves only the clock; the next event resets it to its own time, so a stop
-      // changes nothing in the trajectory.
-      t_now_ = std::max(t_now_, t_stop);
+    // The stop is decided on the absolute clock the caller reads, time() = clock_base_ + t_now_,
+    // so that kTimeReached always means time() ≥ until_time: a stop one ulp short would make the
+    // caller ask for the same stop forever.
+    const bool stop_due = clock_base_ + t_event >= until_time;
+    const double t_stop = until_time - clock_base_;
+    if (t_realign <= t_event && !(stop_due && t_stop <= t_realign)) {
+      t_now_ = std::max(t_now_, t_realign);
+      realign_sheared_grid();
+      continue;
+    }
+    if (stop_due) {
+      if (until_time == kInf) return StopReason::kNoEvents;
+      // Stopping moves only the clock, never past the next event (which resets it to its own
+      // time), so a stop changes nothing in the trajectory.
+      t_now_ = std::max(t_now_, std::min(t_stop, t_event));
+      while (clock_base_ + t_now_ < until_time) t_now_ = std::nextafter(t_now_, t_event);
       return StopReason::kTimeReached;
     }
     const std::int32_t i = heap_.top();

@@ -75,6 +75,8 @@ class Simulation {
   void add_observer(EventObserver* observer) { observers_.push_back(observer); }
 
   double time() const { return clock_base_ + t_now_; }
+  // Absolute time of the earliest pending event (+inf when nothing will happen).
+  double next_event_time() const { return clock_base_ + heap_.top_time(); }
   std::int64_t collisions() const { return collisions_; }
   std::int64_t events() const { return events_; }
   double collisions_per_particle() const {

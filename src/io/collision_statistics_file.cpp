@@ -32,17 +32,21 @@ void write_impact_summary(hid_t group, const std::vector<double>& counts, const 
   write_double(group, "ks_uniform", s.ks_uniform);
 }
 
+// A group, closed (checked) by the caller.
+Handle group(hid_t location, const char* name) { return Handle(create_group(location, name), H5Gclose); }
+
 void write_impacts(hid_t file, const ImpactParameterStatistics& impacts) {
-  const hid_t g = create_group(file, "impact_parameters");
+  Handle impact_group = group(file, "impact_parameters");
+  const hid_t g = impact_group.get();
   const UniformBins& bins = impacts.bins();
   const auto window = impacts.window_collisions();
   write_attribute(g, "window_collisions", H5T_NATIVE_INT64, &window);
   write_vector(g, "bin_edges", edges(bins));
-  const hid_t total = create_group(g, "total");
-  write_impact_summary(total, impacts.total(), bins);
-  H5Gclose(total);
+  Handle total = group(g, "total");
+  write_impact_summary(total.get(), impacts.total(), bins);
+  total.close();
 
-  const hid_t windows = create_group(g, "windows");
+  Handle windows = group(g, "windows");
   std::vector<double> t_start, t_end, collisions, counts;
   for (const auto& w : impacts.windows()) {
     t_start.push_back(w.t_start);
@@ -50,20 +54,20 @@ void write_impacts(hid_t file, const ImpactParameterStatistics& impacts) {
     collisions.push_back(static_cast<double>(w.collisions));
     counts.insert(counts.end(), w.counts.begin(), w.counts.end());
   }
-  write_vector(windows, "t_start", t_start);
-  write_vector(windows, "t_end", t_end);
-  write_vector(windows, "collisions", collisions);
-  write_dataset(windows, "counts", {size(t_start.size()), size(bins.bins)}, counts);
-  H5Gclose(windows);
+  write_vector(windows.get(), "t_start", t_start);
+  write_vector(windows.get(), "t_end", t_end);
+  write_vector(windows.get(), "collisions", collisions);
+  write_dataset(windows.get(), "counts", {size(t_start.size()), size(bins.bins)}, counts);
+  windows.close();
 
   for (std::size_t w = 0; w < impacts.density_windows().size(); ++w) {
-    const hid_t d = create_group(g, fmt::format("density_window_{}", w).c_str());
-    write_double(d, "density_low", impacts.density_windows()[w].low);
-    write_double(d, "density_high", impacts.density_windows()[w].high);
-    write_impact_summary(d, impacts.by_density()[w], bins);
-    H5Gclose(d);
+    Handle d = group(g, fmt::format("density_window_{}", w).c_str());
+    write_double(d.get(), "density_low", impacts.density_windows()[w].low);
+    write_double(d.get(), "density_high", impacts.density_windows()[w].high);
+    write_impact_summary(d.get(), impacts.by_density()[w], bins);
+    d.close();
   }
-  H5Gclose(g);
+  impact_group.close();
 }
 
 void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStatistics& paths) {
@@ -89,28 +93,29 @@ void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStati
 }
 
 void write_paths(hid_t file, const FreePathStatistics& paths) {
-  const hid_t g = create_group(file, "free_paths");
+  Handle path_group = group(file, "free_paths");
+  const hid_t g = path_group.get();
   write_vector(g, "length_edges", edges(paths.length_bins()));
   write_vector(g, "angle_edges", edges(paths.angle_bins()));
-  const hid_t total = create_group(g, "total");
-  write_path_summary(total, paths.total(), paths);
-  H5Gclose(total);
+  Handle total = group(g, "total");
+  write_path_summary(total.get(), paths.total(), paths);
+  total.close();
   const FreePathSettings& s = paths.settings();
   for (std::size_t w = 0; w < s.density_windows.size(); ++w) {
-    const hid_t d = create_group(g, fmt::format("density_window_{}", w).c_str());
-    write_double(d, "density_low", s.density_windows[w].low);
-    write_double(d, "density_high", s.density_windows[w].high);
-    write_path_summary(d, paths.by_density()[w], paths);
-    H5Gclose(d);
+    Handle d = group(g, fmt::format("density_window_{}", w).c_str());
+    write_double(d.get(), "density_low", s.density_windows[w].low);
+    write_double(d.get(), "density_high", s.density_windows[w].high);
+    write_path_summary(d.get(), paths.by_density()[w], paths);
+    d.close();
   }
   for (std::size_t w = 0; w < s.speed_windows.size(); ++w) {
-    const hid_t d = create_group(g, fmt::format("speed_window_{}", w).c_str());
-    write_double(d, "speed_low", s.speed_windows[w].low);
-    write_double(d, "speed_high", s.speed_windows[w].high);
-    write_path_summary(d, paths.by_speed()[w], paths);
-    H5Gclose(d);
+    Handle d = group(g, fmt::format("speed_window_{}", w).c_str());
+    write_double(d.get(), "speed_low", s.speed_windows[w].low);
+    write_double(d.get(), "speed_high", s.speed_windows[w].high);
+    write_path_summary(d.get(), paths.by_speed()[w], paths);
+    d.close();
   }
-  H5Gclose(g);
+  path_group.close();
 }
 
 std::string impact_csv(const ImpactParameterStatistics& impacts) {
@@ -149,7 +154,8 @@ void write_collision_statistics(const std::string& dir, const CollisionStatistic
                                 const ImpactParameterStatistics* impacts, const FreePathStatistics* paths) {
   if (!impacts && !paths) return;
   const std::string path = dir + "/collisions.h5";
-  const hid_t file = create_partial_file(path, kFormat, kFormatVersion, m.version);
+  Handle partial(create_partial_file(path, kFormat, kFormatVersion, m.version), H5Fclose);
+  const hid_t file = partial.get();
   write_string_attribute(file, "boundary", m.boundary);
   write_attribute(file, "particles", H5T_NATIVE_INT64, &m.system.particles);
   for (const auto& [name, value] : std::vector<std::pair<const char*, double>>{
@@ -162,7 +168,7 @@ void write_collision_statistics(const std::string& dir, const CollisionStatistic
   write_attribute(file, "density_cells_ny", H5T_NATIVE_INT, &m.density_grid.ny);
   if (impacts) write_impacts(file, *impacts);
   if (paths) write_paths(file, *paths);
-  publish_partial_file(file, path);
+  publish_partial_file(partial.release(), path);
   if (impacts) write_file_atomically(dir + "/impact_parameters.csv", impact_csv(*impacts));
   if (paths) write_file_atomically(dir + "/free_paths.csv", paths_csv(*paths));
 }

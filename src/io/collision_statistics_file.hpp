@@ -1,6 +1,7 @@
 // Output of the collision statistics (schema in README.md, "collisions.h5"): impact parameters
 // (3.19)–(3.21) and free paths (3.22)–(3.24), (3.36), with their summaries; plus the natural
-// tables as CSV (impact_parameters.csv, free_paths.csv).  All files are written atomically.
+// tables as CSV (impact_parameters.csv, free_paths.csv).  All files are written atomically; a
+// failure throws IoError and publishes nothing incomplete.
 #pragma once
 
 #include <string>

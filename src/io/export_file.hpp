@@ -9,13 +9,13 @@ namespace granule {
 
 class StagedFile {
  public:
-  explicit StagedFile(std::string path);  // throws std::runtime_error naming the path
+  explicit StagedFile(std::string path);  // throws IoError naming the path
   ~StagedFile();                          // removes the partial file unless committed
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
 
   std::ofstream& stream() { return out_; }
-  void commit();  // flush, close and rename; throws std::runtime_error on failure
+  void commit();  // flush, close, sync and rename; throws IoError on failure
 
  private:
   std::string path_;

@@ -33,25 +33,9 @@ void for_each_scalar(Frame& f, Visit&& visit) {
 
 }  // namespace
 
-struct FieldsWriter::Handles {
-  hid_t file = -1;
-};
-
-FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, bool with_collisional)
-    : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {}
-
-std::unique_ptr<FieldsWriter> FieldsWriter::reopen(const std::string& path, const FieldGrid& grid, bool with_collisional,
-                                                   std::int64_t keep_frames) {
-  std::unique_ptr<FieldsWriter> writer(new FieldsWriter(path, grid, with_collisional));
-  writer->handles_->file = reopen_frames_file(path, keep_frames);
-  writer->frames_ = keep_frames;
-  return writer;
-}
-
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
-    : handles_(std::make_unique<Handles>()), path_(path), grid_(grid), with_collisional_(with_collisional) {
-  handles_->file = create_partial_file(path, kFormat, kFormatVersion, m.version);
-  const hid_t f = handles_->file;
+    : file_(path, kFormat, kFormatVersion, m.version), grid_(grid), with_collisional_(with_collisional) {
+  const hid_t f = file_.get();
   write_string_attribute(f, "source", m.source);
   write_string_attribute(f, "boundary", m.boundary);
   write_attribute(f, "nx", H5T_NATIVE_INT, &grid.nx);
@@ -64,37 +48,39 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   write_attribute(f, "shear_velocity", H5T_NATIVE_DOUBLE, &m.system.shear_velocity);
   const int subtract = m.subtract_shear_profile ? 1 : 0;
   write_attribute(f, "subtract_shear_profile", H5T_NATIVE_INT, &subtract);
-  for (const char* group : {"/frames", "/instant", "/average", "/profiles"}) H5Gclose(create_group(f, group));
+  for (const char* group : {"/frames", "/instant", "/average", "/profiles"}) Handle(create_group(f, group), H5Gclose).close();
 
   const std::vector<hsize_t> cells{static_cast<hsize_t>(grid.ny), static_cast<hsize_t>(grid.nx)};
   const std::vector<hsize_t> rows{static_cast<hsize_t>(grid.ny)};
   FieldsFrame shape;
-  for_each_scalar(shape, [&](const char* name, double&) { H5Dclose(create_frames(f, name, H5T_NATIVE_DOUBLE, {})); });
-  H5Dclose(create_frames(f, "/average/configurations", H5T_NATIVE_INT, {}));
+  for_each_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
+  add_frames(f, "/average/configurations", H5T_NATIVE_INT, {});
   for_each_field(shape.instant, [&](const char* name, std::vector<double>&) {
-    H5Dclose(create_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
-    H5Dclose(create_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
+    add_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
+    add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
   });
   if (with_collisional_) {
-    for_each_stress([&](const char* name) {
-      H5Dclose(create_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells));
-    });
+    for_each_stress([&](const char* name) { add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells); });
   }
   std::vector<double> y;
   for (int iy = 0; iy < grid.ny; ++iy) y.push_back(grid.center_y(iy));
   write_dataset(f, "/profiles/y", rows, y);
   for (const char* name : {"density", "velocity_x", "velocity_y", "temperature"}) {
-    H5Dclose(create_frames(f, (std::string("/profiles/") + name).c_str(), H5T_NATIVE_DOUBLE, rows));
+    add_frames(f, (std::string("/profiles/") + name).c_str(), H5T_NATIVE_DOUBLE, rows);
   }
+  file_.flush();
 }
 
-FieldsWriter::~FieldsWriter() {
-  if (handles_ && handles_->file >= 0) H5Fclose(handles_->file);
+FieldsWriter::FieldsWriter(const std::string& path, std::int64_t keep_frames)
+    : file_(path, kFormat, keep_frames), grid_(read_fields_grid(file_.get())) {
+  const htri_t collisional = H5Lexists(file_.get(), "/average/collisional_xx", H5P_DEFAULT);
+  check(collisional, file_.get(), "look for", "/average/collisional_xx");
+  with_collisional_ = collisional > 0;
 }
 
 void FieldsWriter::append(const FieldsFrame& frame) {
-  const hid_t f = handles_->file;
-  const auto at = static_cast<hsize_t>(frames_);
+  const hid_t f = file_.get();
+  const auto at = static_cast<hsize_t>(file_.frames());
   for_each_scalar(frame, [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); });
   append_frame(f, "/average/configurations", H5T_NATIVE_INT, &frame.configurations, at);
   for_each_field(frame.instant, [&](const char* name, const std::vector<double>& v) {
@@ -127,14 +113,16 @@ void FieldsWriter::append(const FieldsFrame& frame) {
       {"/profiles/density", &p.density}, {"/profiles/velocity_x", &p.velocity_x},
       {"/profiles/velocity_y", &p.velocity_y}, {"/profiles/temperature", &p.temperature}};
   for (const auto& [name, v] : profiles) append_frame(f, name, H5T_NATIVE_DOUBLE, v->data(), at);
-  H5Fflush(f, H5F_SCOPE_GLOBAL);
-  ++frames_;
+  file_.end_frame();
 }
 
-void FieldsWriter::finish() {
-  if (handles_->file < 0) return;
-  publish_partial_file(handles_->file, path_);
-  handles_->file = -1;
+FieldGrid read_fields_grid(hid_t file) {
+  FieldGrid grid;
+  grid.nx = read_attribute<int>(file, "nx", H5T_NATIVE_INT);
+  grid.ny = read_attribute<int>(file, "ny", H5T_NATIVE_INT);
+  grid.length_x = read_attribute<double>(file, "length_x", H5T_NATIVE_DOUBLE);
+  grid.length_y = read_attribute<double>(file, "length_y", H5T_NATIVE_DOUBLE);
+  return grid;
 }
 
 }  // namespace granule

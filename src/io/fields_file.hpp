@@ -1,16 +1,17 @@
 // HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
 // instantaneous fields of the configuration, the fields averaged over the interval since the
 // previous frame (with the collisional stress (1.6) when collisions were observed), and the
-// streamwise profiles.  Written to `<name>.partial`, renamed by finish().
+// streamwise profiles.  Written to `<name>.partial`, renamed by finish(); every failure throws
+// IoError and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/collisional_stress.hpp"
+#include "io/hdf5_util.hpp"
 
 namespace granule {
 
@@ -34,25 +35,22 @@ struct FieldsFrame {
 class FieldsWriter {
  public:
   FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& metadata, bool with_collisional);
-  // Continue the file of an interrupted or finished run after its first `keep_frames` frames.
-  static std::unique_ptr<FieldsWriter> reopen(const std::string& path, const FieldGrid& grid, bool with_collisional,
-                                              std::int64_t keep_frames);
-  ~FieldsWriter();
-  FieldsWriter(const FieldsWriter&) = delete;
-  FieldsWriter& operator=(const FieldsWriter&) = delete;
+  // Continues `path` (resume) keeping its first `keep_frames` frames (negative: every complete
+  // frame), as SnapshotWriter does; grid and collisional stress as in the file.
+  FieldsWriter(const std::string& path, std::int64_t keep_frames);
+  // A writer not finished leaves `path`.partial, closed.
 
   void append(const FieldsFrame& frame);
-  std::int64_t frames() const { return frames_; }
-  void finish();
+  std::int64_t frames() const { return file_.frames(); }
+  void finish() { file_.publish(); }
 
  private:
-  FieldsWriter(const std::string& path, const FieldGrid& grid, bool with_collisional);
-  struct Handles;
-  std::unique_ptr<Handles> handles_;
-  std::string path_;
+  h5::PartialFile file_;
   FieldGrid grid_;
-  bool with_collisional_;
-  std::int64_t frames_ = 0;
+  bool with_collisional_ = false;
 };
+
+// The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y).
+FieldGrid read_fields_grid(hid_t file);
 
 }  // namespace granule

@@ -1,5 +1,8 @@
 // Small wrappers over the HDF5 C API shared by Granule's files (snapshots, fields, collision
-// statistics): error checks that throw, attributes, and extendible per-frame datasets.
+// statistics, spectra, f1): every call checked (a failure throws IoError naming the file, the
+// object and the system's reason), identifiers owned by Handle, attributes, extendible per-frame
+// datasets, and the `<name>.partial` life cycle of a file (create, publish, reopen and truncate).
+// Objects are created without modification times, so equal content gives byte-identical files.
 #pragma once
 
 #include <hdf5.h>
@@ -10,43 +13,111 @@
 
 namespace granule::h5 {
 
-void check(herr_t status, const std::string& what);
-hid_t check_id(hid_t id, const std::string& what);
+// One HDF5 identifier, closed once.  close() reports a failed close (closing a dataset or a file
+// writes what HDF5 still caches, which fails on a full disk); the destructor closes quietly, for
+// the paths on which an exception is already on its way.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle() = default;
+  Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  Handle(Handle&& other) noexcept : id_(other.release()), closer_(other.closer_) {}
+  Handle& operator=(Handle&& other) noexcept;
+  ~Handle() { discard(); }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  hid_t get() const { return id_; }
+  void close();     // throws IoError
+  hid_t release();  // the caller closes the identifier
+
+ private:
+  void discard() noexcept;
+  hid_t id_ = -1;
+  Closer closer_ = nullptr;
+};
+
+// An identifier returned by an HDF5 call, checked as check_id does, owned with its closer.
+Handle owned(hid_t id, Handle::Closer closer, hid_t location, const char* action, const char* name);
+// Creation properties (dataset, group or file class) without object modification times.
+Handle untimed_creation_properties(hid_t property_class, hid_t location, const char* name);
+
+// Throws IoError "cannot <action> <name> in <file of location>: <reason>" when status < 0.
+void check(herr_t status, hid_t location, const char* action, const char* name);
+// The same for a call returning an identifier; returns a valid identifier.
+hid_t check_id(hid_t id, hid_t location, const char* action, const char* name);
 
 void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1);
 void write_string_attribute(hid_t object, const char* name, const std::string& value);
 inline void write_double(hid_t object, const char* name, double value) { write_attribute(object, name, H5T_NATIVE_DOUBLE, &value); }
+// Reads a whole attribute, converted to memory type `type`, into `data`.
+void read_attribute_values(hid_t object, const char* name, hid_t type, void* data);
 template <typename T>
 T read_attribute(hid_t object, const char* name, hid_t type) {
   T value{};
-  const hid_t attribute = check_id(H5Aopen(object, name, H5P_DEFAULT), std::string("reading attribute ") + name);
-  check(H5Aread(attribute, type, &value), name);
-  H5Aclose(attribute);
+  read_attribute_values(object, name, type, &value);
   return value;
 }
 std::string read_string_attribute(hid_t object, const char* name);
 
+// Opens a file read-only.  Throws IoError naming the path.
+Handle open_file(const std::string& path);
+
 // Files a user keeps are written as `<path>.partial` and renamed when complete.  Creates the
 // partial file stamped with the format name, its version and Granule's version (root attributes
-// `format`, `format_version`, `granule_version`).
+// `format`, `format_version`, `granule_version`); the caller owns (closes) the identifier.
 hid_t create_partial_file(const std::string& path, const char* format, int format_version, const std::string& granule_version);
-// Close a file made by create_partial_file and give it its final name `path`.
+// Closes a file made by create_partial_file (taking the identifier) and gives it its final name
+// `path` only when the close succeeded: otherwise throws IoError and `<path>.partial` remains.
 void publish_partial_file(hid_t file, const std::string& path);
-// Reopen a file of frames to continue it: `<path>.partial` if a run left one, else the published
-// `<path>`, renamed back to `<path>.partial` until it is complete again.  Every extendible
-// dataset is cut to its first `keep_frames` frames (what a checkpoint knew of).
-hid_t reopen_frames_file(const std::string& path, std::int64_t keep_frames);
 
-// An extendible dataset of frames: shape (frames, row...) with one chunk per frame.
+// An extendible dataset of frames: shape (frames, row...) with one chunk per frame.  These are
+// the file's per-frame datasets: those whose first dimension is unlimited.  The caller owns the
+// identifier; add_frames closes it at once.
 hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
-// Write (grow = true, extending the dataset by one frame) or read one frame of a dataset.
+void add_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
+// The shape of a dataset.
+std::vector<hsize_t> dataset_shape(hid_t location, const char* name);
+// Write (grow = true, extending the dataset to frame + 1 frames) or read one frame of a dataset.
 void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow);
 void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame);
 void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame);
 
+// The frames every per-frame dataset holds: the shortest length, since a run stopped in the
+// middle of a frame leaves some datasets one frame longer than others (0 without any).
+std::int64_t complete_frames(hid_t file);
+// The same for the file at `path` (a `.partial` or a published file).  Throws IoError.
+std::int64_t complete_frames(const std::string& path);
+
+// A file of frames written as `<path>.partial` (snapshots, fields): each frame is flushed when
+// complete, and publish() gives the file its final name.  Destroyed unpublished, it leaves
+// `<path>.partial`, closed.
+class PartialFile {
+ public:
+  // A new file, as create_partial_file.
+  PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version);
+  // Resume: reopens `<path>.partial` if it exists, else the published `path` renamed back to
+  // `<path>.partial` (not copied), and cuts every per-frame dataset to its first `keep_frames`
+  // frames (keep_frames < 0: the complete frames).  Throws std::invalid_argument, before renaming
+  // anything, when the file is not of `format` or holds fewer complete frames than asked for.
+  PartialFile(const std::string& path, const char* format, std::int64_t keep_frames);
+
+  hid_t get() const { return file_.get(); }
+  std::int64_t frames() const { return frames_; }
+  void flush();      // the file as it stands (after its layout)
+  void end_frame();  // flush and count a frame whose datasets are all written
+  void publish();    // close and rename (once; later calls do nothing)
+
+ private:
+  std::string path_;
+  Handle file_;
+  std::int64_t frames_ = 0;
+};
+
 // A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);
 void write_vector(hid_t location, const char* name, const std::vector<double>& data);
+// A group; the caller owns the identifier.
 hid_t create_group(hid_t location, const char* name);
 
 }  // namespace granule::h5

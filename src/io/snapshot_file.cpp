@@ -4,7 +4,6 @@
 
 #include <hdf5.h>
 
-#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -38,17 +37,33 @@ std::vector<double> interleave(const std::vector<double>& a, const std::vector<d
   return out;
 }
 
+// The metadata of an open snapshot file.
+SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
+  if (read_string_attribute(f, "format") != kFormat) throw std::runtime_error(path + " is not a Granule snapshot file");
+  SnapshotMetadata m;
+  m.version = read_string_attribute(f, "granule_version");
+  m.boundary = read_string_attribute(f, "boundary");
+  m.system.particles = read_attribute<std::int64_t>(f, "particles", H5T_NATIVE_INT64);
+  m.system.diameter = read_attribute<double>(f, "diameter", H5T_NATIVE_DOUBLE);
+  double box[2] = {0.0, 0.0};
+  read_attribute_values(f, "box", H5T_NATIVE_DOUBLE, box);
+  m.system.length_x = box[0];
+  m.system.length_y = box[1];
+  m.area_fraction = read_attribute<double>(f, "area_fraction", H5T_NATIVE_DOUBLE);
+  m.system.restitution = read_attribute<double>(f, "restitution", H5T_NATIVE_DOUBLE);
+  m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
+  m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
+  m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
+  return m;
+}
+
 }  // namespace
 
-struct SnapshotWriter::Handles {
-  hid_t file = -1;
-};
-
 SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& m)
-    : handles_(std::make_unique<Handles>()), path_(path), particles_(m.system.particles), tc_(m.system.tc_duration > 0.0) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through exceptions
-  handles_->file = create_partial_file(path, kFormat, kFormatVersion, m.version);
-  const hid_t f = handles_->file;
+    : file_(std::make_unique<PartialFile>(path, kFormat, kFormatVersion, m.version)),
+      particles_(m.system.particles),
+      tc_(m.system.tc_duration > 0.0) {
+  const hid_t f = file_->get();
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
   const double box[2] = {m.system.length_x, m.system.length_y};
@@ -60,106 +75,69 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
   write_attribute(f, "shear_velocity", H5T_NATIVE_DOUBLE, &m.system.shear_velocity);
   write_attribute(f, "seed", H5T_NATIVE_UINT64, &m.seed);
   const auto n = static_cast<hsize_t>(m.system.particles);
-  for (const char* name : {"positions", "velocities"}) H5Dclose(create_frames(f, name, H5T_IEEE_F64LE, {n, 2}));
+  for (const char* name : {"positions", "velocities"}) add_frames(f, name, H5T_IEEE_F64LE, {n, 2});
   const SnapshotFrame layout;
   for_each_scalar(layout, [&](const char* name, hid_t memory_type, const void*) {
-    const hid_t file_type = H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE;
-    H5Dclose(create_frames(f, name, file_type, {}));
+    add_frames(f, name, H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
   });
-  if (tc_) H5Dclose(create_frames(f, "last_collision", H5T_IEEE_F64LE, {n}));
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path + ".partial");
+  if (tc_) add_frames(f, "last_collision", H5T_IEEE_F64LE, {n});
+  file_->flush();
 }
 
-std::unique_ptr<SnapshotWriter> SnapshotWriter::reopen(const std::string& path, std::int64_t keep_frames) {
-  std::unique_ptr<SnapshotWriter> writer(new SnapshotWriter());
-  writer->handles_ = std::make_unique<Handles>();
-  writer->path_ = path;
-  writer->handles_->file = reopen_frames_file(path, keep_frames);
-  writer->particles_ = read_attribute<std::int64_t>(writer->handles_->file, "particles", H5T_NATIVE_INT64);
-  writer->tc_ = read_attribute<double>(writer->handles_->file, "tc_duration", H5T_NATIVE_DOUBLE) > 0.0;
-  writer->frames_ = keep_frames;
-  return writer;
+SnapshotWriter::SnapshotWriter(const std::string& path, std::int64_t keep_frames)
+    : file_(std::make_unique<PartialFile>(path, kFormat, keep_frames)) {
+  const SnapshotMetadata m = read_metadata(file_->get(), path + ".partial");
+  particles_ = m.system.particles;
+  tc_ = m.system.tc_duration > 0.0;
 }
 
-SnapshotWriter::~SnapshotWriter() {
-  if (handles_ && handles_->file >= 0) H5Fclose(handles_->file);
-}
+SnapshotWriter::~SnapshotWriter() = default;
+
+std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
 
 void SnapshotWriter::append(const SnapshotFrame& frame) {
-  const hid_t f = handles_->file;
-  const auto k = static_cast<hsize_t>(frames_);
+  const hid_t f = file_->get();
+  const auto k = static_cast<hsize_t>(file_->frames());
   append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles.x, frame.particles.y).data(), k);
   append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles.vx, frame.particles.vy).data(), k);
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
-  ++frames_;
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing " + path_ + ".partial");
+  file_->end_frame();
 }
 
-void SnapshotWriter::finish() {
-  if (handles_->file < 0) return;
-  publish_partial_file(handles_->file, path_);
-  handles_->file = -1;
-}
+void SnapshotWriter::finish() { file_->publish(); }
 
 SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t f = check_id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "opening " + path);
+  Handle file = open_file(path);
+  const hid_t f = file.get();
   SnapshotRead out;
-  try {
-    if (read_string_attribute(f, "format") != kFormat) throw std::runtime_error(path + " is not a Granule snapshot file");
-    SnapshotMetadata& m = out.metadata;
-    m.version = read_string_attribute(f, "granule_version");
-    m.boundary = read_string_attribute(f, "boundary");
-    m.system.particles = read_attribute<std::int64_t>(f, "particles", H5T_NATIVE_INT64);
-    m.system.diameter = read_attribute<double>(f, "diameter", H5T_NATIVE_DOUBLE);
-    double box[2] = {0.0, 0.0};
-    const hid_t attribute = H5Aopen(f, "box", H5P_DEFAULT);
-    check(H5Aread(attribute, H5T_NATIVE_DOUBLE, box), "reading box");
-    H5Aclose(attribute);
-    m.system.length_x = box[0];
-    m.system.length_y = box[1];
-    m.area_fraction = read_attribute<double>(f, "area_fraction", H5T_NATIVE_DOUBLE);
-    m.system.restitution = read_attribute<double>(f, "restitution", H5T_NATIVE_DOUBLE);
-    m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
-    m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
-    m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
+  SnapshotMetadata& m = out.metadata;
+  m = read_metadata(f, path);
+  out.frames = complete_frames(f);
+  const std::int64_t k = index < 0 ? out.frames + index : index;
+  if (k < 0 || k >= out.frames) throw std::runtime_error(path + " has no frame " + std::to_string(index));
+  const auto frame = static_cast<hsize_t>(k);
 
-    const hid_t dataset = check_id(H5Dopen2(f, "time", H5P_DEFAULT), "opening time");
-    const hid_t space = H5Dget_space(dataset);
-    hsize_t frames = 0;
-    H5Sget_simple_extent_dims(space, &frames, nullptr);
-    H5Sclose(space);
-    H5Dclose(dataset);
-    out.frames = static_cast<std::int64_t>(frames);
-    const std::int64_t k = index < 0 ? out.frames + index : index;
-    if (k < 0 || k >= out.frames) throw std::runtime_error(path + " has no frame " + std::to_string(index));
-    const auto frame = static_cast<hsize_t>(k);
-
-    const auto n = static_cast<std::size_t>(m.system.particles);
-    SnapshotFrame& s = out.frame;
-    std::vector<double> buffer(2 * n);
-    s.particles.resize(n);
-    read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-    for (std::size_t i = 0; i < n; ++i) {
-      s.particles.x[i] = buffer[2 * i];
-      s.particles.y[i] = buffer[2 * i + 1];
-    }
-    read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-    for (std::size_t i = 0; i < n; ++i) {
-      s.particles.vx[i] = buffer[2 * i];
-      s.particles.vy[i] = buffer[2 * i + 1];
-    }
-    for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
-    if (m.system.tc_duration > 0.0) {
-      s.clock.last_collision.resize(n);
-      read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);
-    }
-  } catch (...) {
-    H5Fclose(f);
-    throw;
+  const auto n = static_cast<std::size_t>(m.system.particles);
+  SnapshotFrame& s = out.frame;
+  std::vector<double> buffer(2 * n);
+  s.particles.resize(n);
+  read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.particles.x[i] = buffer[2 * i];
+    s.particles.y[i] = buffer[2 * i + 1];
   }
-  H5Fclose(f);
+  read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.particles.vx[i] = buffer[2 * i];
+    s.particles.vy[i] = buffer[2 * i + 1];
+  }
+  for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
+  if (m.system.tc_duration > 0.0) {
+    s.clock.last_collision.resize(n);
+    read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);
+  }
+  file.close();
   return out;
 }
 

@@ -1,6 +1,7 @@
 // HDF5 snapshot files (schema in README.md, "snapshots.h5").  Frames are appended to
 // `<name>.partial` during a run, flushed after each frame, and the file is renamed to `<name>`
-// when the run ends, so a finished name is always a complete file.
+// when the run ends, so a finished name is always a complete file.  Every failure throws IoError
+// (src/io/io_error.hpp) and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,10 @@
 #include "engine/system_params.hpp"
 
 namespace granule {
+
+namespace h5 {
+class PartialFile;
+}
 
 struct SnapshotMetadata {
   SystemParams system;
@@ -29,26 +34,26 @@ struct SnapshotFrame {
 
 class SnapshotWriter {
  public:
-  // Starts `path`.partial (replacing any earlier partial file).  Throws std::runtime_error.
+  static constexpr std::int64_t kCompleteFrames = -1;
+
+  // Starts `path`.partial (replacing any earlier partial file).
   SnapshotWriter(const std::string& path, const SnapshotMetadata& metadata);
-  // Continue the file of an interrupted or finished run after its first `keep_frames` frames
-  // (hdf5_util.hpp, reopen_frames_file).
-  static std::unique_ptr<SnapshotWriter> reopen(const std::string& path, std::int64_t keep_frames);
-  ~SnapshotWriter();
+  // Continues `path` (resume): reopens `path`.partial, or the published `path` renamed back to
+  // `path`.partial (not copied), keeping its first `keep_frames` frames (kCompleteFrames: every
+  // frame all datasets hold); later frames are appended after them and finish() publishes the
+  // file again.  Throws std::invalid_argument when the file holds fewer complete frames.
+  explicit SnapshotWriter(const std::string& path, std::int64_t keep_frames = kCompleteFrames);
+  ~SnapshotWriter();  // a writer not finished leaves `path`.partial, closed
   SnapshotWriter(const SnapshotWriter&) = delete;
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   void append(const SnapshotFrame& frame);
-  std::int64_t frames() const { return frames_; }
+  std::int64_t frames() const;
   // Close and rename to the final name.
   void finish();
 
  private:
-  SnapshotWriter() = default;
-  struct Handles;
-  std::unique_ptr<Handles> handles_;
-  std::string path_;
-  std::int64_t frames_ = 0;
+  std::unique_ptr<h5::PartialFile> file_;
   std::int64_t particles_ = 0;
   bool tc_ = false;
 };
@@ -56,10 +61,12 @@ class SnapshotWriter {
 struct SnapshotRead {
   SnapshotMetadata metadata;
   SnapshotFrame frame;
-  std::int64_t frames = 0;
+  std::int64_t frames = 0;  // complete frames in the file
 };
 
-// Reads frame `index` (negative counts from the end) of a snapshot file.  Throws on error.
+// Reads frame `index` (negative counts from the end) of a snapshot file, `.partial` or published.
+// Throws IoError when the file cannot be read, std::runtime_error when it is not a snapshot file
+// or has no such frame.
 SnapshotRead read_snapshot(const std::string& path, std::int64_t index = -1);
 
 }  // namespace granule

@@ -2,8 +2,12 @@
 
 #include <cairo.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/io_error.hpp"
 
 namespace granule::render {
 
@@ -25,9 +29,15 @@ void write_png(const RasterImage& image, const std::string& path) {
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) {
     std::filesystem::remove(partial);
-    throw std::runtime_error("cannot write " + path + ": " + cairo_status_to_string(status));
+    const std::string message = "cannot write " + path + ": " + cairo_status_to_string(status);
+    if (status == CAIRO_STATUS_WRITE_ERROR) throw IoError(message);  // disk full, vanished directory
+    throw std::runtime_error(message);
   }
-  std::filesystem::rename(partial, path);
+  if (std::rename(partial.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    std::filesystem::remove(partial);
+    throw io_error("cannot rename " + partial + " to " + path, error);
+  }
 }
 
 }  // namespace granule::render
