@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace granule::testing {
+namespace granule::test_statistics {
 
 // Standard-normal quantiles of the two-sided levels the tests use.
 inline constexpr double kNormal999 = 3.090232;   // Φ⁻¹(0.999)
@@ -18,4 +18,4 @@ inline double chi_square_quantile(double k, double z) {
   return k * cube_root * cube_root * cube_root;
 }
 
-}  // namespace granule::testing
+}  // namespace granule::test_statistics

@@ -61,8 +61,8 @@
 namespace granule::distribution {
 namespace {
 
-using granule::testing::chi_square_quantile;
-using granule::testing::kNormal9995;
+using granule::test_statistics::chi_square_quantile;
+using granule::test_statistics::kNormal9995;
 
 constexpr double kT = 0.7;
 constexpr int kHarmonics = AngularFit::kHarmonics;
