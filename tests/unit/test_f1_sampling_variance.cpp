@@ -57,12 +57,15 @@
 #include "distribution/f1_analysis.hpp"
 #include "init/random.hpp"
 #include "unit/chi_square.hpp"
+#include "unit/maxwellian_cramer_rao.hpp"
 
 namespace granule::distribution {
 namespace {
 
 using granule::test_statistics::chi_square_quantile;
 using granule::test_statistics::kNormal9995;
+using granule::test_statistics::maxwellian_harmonic_bound_times_root_n;
+using granule::test_statistics::maxwellian_means_bound_times_n;
 
 constexpr double kT = 0.7;
 constexpr int kHarmonics = AngularFit::kHarmonics;
@@ -183,22 +186,6 @@ TEST(F1SamplingVariance, AngularHarmonicsOfPsiHaveTheirExactMultinomialSpread) {
 
 // ---- 2–4. the fitted means, the direct moment and the bootstrap ---------------------------------
 
-// Cramér–Rao covariance of (√2T b_0^(1), 2T b_0^(2)) times n, and the b_0^(0) variance times n.
-Eigen::Matrix2d cramer_rao_times_n() {
-  Eigen::Matrix2d fisher;
-  fisher << 1.0 - M_PI / 4.0, std::sqrt(M_PI) / 4.0, std::sqrt(M_PI) / 4.0, 1.0;
-  return fisher.inverse();
-}
-
-// Cramér–Rao σ of a harmonic component of b^(i) (dimensionless, 2T = 1), times √n.
-std::array<double, 3> harmonic_bound_times_root_n() {
-  const double mu1 = std::sqrt(M_PI) / 2.0, mu3 = 3.0 * std::sqrt(M_PI) / 4.0;
-  Eigen::Matrix3d moments;
-  moments << 1.0, mu1, 1.0, mu1, 1.0, mu3, 1.0, mu3, 2.0;
-  const Eigen::Matrix3d inverse = moments.inverse();
-  return {std::sqrt(2.0 * inverse(0, 0)), std::sqrt(2.0 * inverse(1, 1)), std::sqrt(2.0 * inverse(2, 2))};
-}
-
 // Each estimate costs 0.1–1 s (on an isotropic sample the ψ fit of unresolved harmonics can run to
 // its evaluation limit), hence few seeds.
 constexpr int kSnapshots = 40, kPerSnapshot = 2500;
@@ -232,7 +219,7 @@ const std::vector<SeedResult>& maxwellian_results() {
       SeedResult x{s * b.mean[1], 2.0 * kT * b.mean[2], b.mean[0] - std::log(2.0 * M_PI * kT),
                    r.estimate.direct.trace() / (2.0 * kT), s * e.mean[1], 2.0 * kT * e.mean[2], e.mean[0],
                    r.errors.direct_trace / (2.0 * kT)};
-      const std::array<double, 3> unit = {1.0, s, 2.0 * kT}, bound = harmonic_bound_times_root_n();
+      const std::array<double, 3> unit = {1.0, s, 2.0 * kT}, bound = maxwellian_harmonic_bound_times_root_n();
       for (const auto& amplitude : b.amplitude)
         for (int i = 0; i < 3; ++i)
           x.largest_harmonic_z = std::max(x.largest_harmonic_z, std::abs(unit[i] * amplitude[i]) * std::sqrt(kSamples) / bound[i]);
@@ -252,7 +239,7 @@ const std::vector<SeedResult>& maxwellian_results() {
 // b_0^(0) = log 2πT, no harmonics — within the analytic spread.
 TEST(F1SamplingVariance, FittedMeansOfAMaxwellianSpreadAsTheCramerRaoBoundAllows) {
   const std::vector<SeedResult>& results = maxwellian_results();
-  const Eigen::Matrix2d bound = cramer_rao_times_n() / kSamples;
+  const Eigen::Matrix2d bound = maxwellian_means_bound_times_n() / kSamples;
   const Eigen::Matrix2d inverse = bound.inverse();
   const double sigma_b0 = std::sqrt(bound(1, 1)), sigma_trace = 1.0 / std::sqrt(kSamples);
   double pooled_b = 0, pooled_b0 = 0, pooled_trace = 0, largest_z = 0, largest_harmonic_z = 0;
@@ -292,7 +279,7 @@ TEST(F1SamplingVariance, FittedMeansOfAMaxwellianSpreadAsTheCramerRaoBoundAllows
 
 TEST(F1SamplingVariance, BootstrapErrorsAgreeWithTheAnalyticSpread) {
   const std::vector<SeedResult>& results = maxwellian_results();
-  const Eigen::Matrix2d bound = cramer_rao_times_n() / kSamples;
+  const Eigen::Matrix2d bound = maxwellian_means_bound_times_n() / kSamples;
   const double ideal = (kSnapshots - 1.0) / kSnapshots;  // bootstrap variance / sampling variance
   const double dof_per_seed = 2.0 / (2.0 / (kReplicates - 1.0) + 2.0 / (kSnapshots - 1.0));
   const double dof = dof_per_seed * kBootstrapSeeds;
