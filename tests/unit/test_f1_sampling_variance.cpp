@@ -187,7 +187,8 @@ TEST(F1SamplingVariance, AngularHarmonicsOfPsiHaveTheirExactMultinomialSpread) {
 // ---- 2–4. the fitted means, the direct moment and the bootstrap ---------------------------------
 
 // Each estimate costs 0.1–1 s (on an isotropic sample the ψ fit of unresolved harmonics can run to
-// its evaluation limit), hence few seeds.
+// its evaluation limit), hence few seeds; each test computes its own (ctest runs every test in a
+// process of its own, so a shared cache would be computed twice anyway).
 constexpr int kSnapshots = 40, kPerSnapshot = 2500;
 constexpr double kSamples = kSnapshots * kPerSnapshot;
 constexpr int kSeeds = 12;
@@ -201,44 +202,40 @@ struct SeedResult {
   bool converged = false;
 };
 
-// The analysis of kSeeds isotropic Maxwellian windows (the first kBootstrapSeeds with bootstrap),
-// shared by the tests below.
-const std::vector<SeedResult>& maxwellian_results() {
-  static const std::vector<SeedResult> results = [] {
-    std::vector<SeedResult> out;
-    const double s = std::sqrt(2.0 * kT);
-    for (int seed = 1; seed <= kSeeds; ++seed) {
-      F1Options options;
-      options.speed_bins = options.angle_bins = 32;
-      options.bootstrap = seed <= kBootstrapSeeds ? kReplicates : 0;
-      options.seed = static_cast<std::uint64_t>(seed);
-      const WindowResult r = analyse_window(gaussian_window(static_cast<std::uint64_t>(seed), kSnapshots, kPerSnapshot, {kT, 0.0, kT}), options);
-      EXPECT_TRUE(r.analysed) << r.warning;
-      const SineSeries& b = r.estimate.series;
-      const SineSeries& e = r.errors.series;
-      SeedResult x{s * b.mean[1], 2.0 * kT * b.mean[2], b.mean[0] - std::log(2.0 * M_PI * kT),
-                   r.estimate.direct.trace() / (2.0 * kT), s * e.mean[1], 2.0 * kT * e.mean[2], e.mean[0],
-                   r.errors.direct_trace / (2.0 * kT)};
-      const std::array<double, 3> unit = {1.0, s, 2.0 * kT}, bound = maxwellian_harmonic_bound_times_root_n();
-      for (const auto& amplitude : b.amplitude)
-        for (int i = 0; i < 3; ++i)
-          x.largest_harmonic_z = std::max(x.largest_harmonic_z, std::abs(unit[i] * amplitude[i]) * std::sqrt(kSamples) / bound[i]);
-      x.once_stress = r.estimate.once_integrals.moment.trace() / r.estimate.direct.trace();
-      x.twice_stress = r.estimate.twice_integrals.moment.trace() / r.estimate.direct.trace();
-      // (The ψ fit is a fit of noise here: along its degenerate directions, α_p → 0 with Q_p free,
-      // it may exhaust its evaluation limit, so its convergence is not required.)
-      x.converged = r.estimate.once.speed.report.converged && r.estimate.series.report.converged;
-      out.push_back(x);
-    }
-    return out;
-  }();
-  return results;
+// The analysis of `seeds` isotropic Maxwellian windows with `replicates` bootstrap replicates.
+std::vector<SeedResult> maxwellian_results(int seeds, int replicates) {
+  std::vector<SeedResult> out;
+  const double s = std::sqrt(2.0 * kT);
+  for (int seed = 1; seed <= seeds; ++seed) {
+    F1Options options;
+    options.speed_bins = options.angle_bins = 32;
+    options.bootstrap = replicates;
+    options.seed = static_cast<std::uint64_t>(seed);
+    const WindowResult r = analyse_window(gaussian_window(static_cast<std::uint64_t>(seed), kSnapshots, kPerSnapshot, {kT, 0.0, kT}), options);
+    EXPECT_TRUE(r.analysed) << r.warning;
+    const SineSeries& b = r.estimate.series;
+    const SineSeries& e = r.errors.series;
+    SeedResult x{s * b.mean[1], 2.0 * kT * b.mean[2], b.mean[0] - std::log(2.0 * M_PI * kT),
+                 r.estimate.direct.trace() / (2.0 * kT), s * e.mean[1], 2.0 * kT * e.mean[2], e.mean[0],
+                 r.errors.direct_trace / (2.0 * kT)};
+    const std::array<double, 3> unit = {1.0, s, 2.0 * kT}, bound = maxwellian_harmonic_bound_times_root_n();
+    for (const auto& amplitude : b.amplitude)
+      for (int i = 0; i < 3; ++i)
+        x.largest_harmonic_z = std::max(x.largest_harmonic_z, std::abs(unit[i] * amplitude[i]) * std::sqrt(kSamples) / bound[i]);
+    x.once_stress = r.estimate.once_integrals.moment.trace() / r.estimate.direct.trace();
+    x.twice_stress = r.estimate.twice_integrals.moment.trace() / r.estimate.direct.trace();
+    // (The ψ fit is a fit of noise here: along its degenerate directions, α_p → 0 with Q_p free,
+    // it may exhaust its evaluation limit, so its convergence is not required.)
+    x.converged = r.estimate.once.speed.report.converged && r.estimate.series.report.converged;
+    out.push_back(x);
+  }
+  return out;
 }
 
 // The elastic reference of the thesis (§5.2 after (5.29)): 2T b_0^(2) = 1, √2T b_0^(1) = 0,
 // b_0^(0) = log 2πT, no harmonics — within the analytic spread.
 TEST(F1SamplingVariance, FittedMeansOfAMaxwellianSpreadAsTheCramerRaoBoundAllows) {
-  const std::vector<SeedResult>& results = maxwellian_results();
+  const std::vector<SeedResult> results = maxwellian_results(kSeeds, 0);
   const Eigen::Matrix2d bound = maxwellian_means_bound_times_n() / kSamples;
   const Eigen::Matrix2d inverse = bound.inverse();
   const double sigma_b0 = std::sqrt(bound(1, 1)), sigma_trace = 1.0 / std::sqrt(kSamples);
@@ -278,7 +275,7 @@ TEST(F1SamplingVariance, FittedMeansOfAMaxwellianSpreadAsTheCramerRaoBoundAllows
 }
 
 TEST(F1SamplingVariance, BootstrapErrorsAgreeWithTheAnalyticSpread) {
-  const std::vector<SeedResult>& results = maxwellian_results();
+  const std::vector<SeedResult> results = maxwellian_results(kBootstrapSeeds, kReplicates);
   const Eigen::Matrix2d bound = maxwellian_means_bound_times_n() / kSamples;
   const double ideal = (kSnapshots - 1.0) / kSnapshots;  // bootstrap variance / sampling variance
   const double dof_per_seed = 2.0 / (2.0 / (kReplicates - 1.0) + 2.0 / (kSnapshots - 1.0));
