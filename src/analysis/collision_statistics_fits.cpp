@@ -3,17 +3,23 @@
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace granule {
 
 namespace {
 
+struct ScaleFit {
+  double value;
+  bool at_range_end;  // the scan's best point was `low` or `high`: no minimum inside the range
+};
+
 // Minimise a one-parameter least-squares objective over a positive scale between `low` and
 // `high`: a coarse scan in log space finds the basin (the objectives here need not be unimodal
 // over many decades), then Brent's method (Boost.Math) refines within the neighbouring points.
 template <typename Objective>
-double fit_scale(Objective&& objective, double low, double high) {
+ScaleFit fit_scale(Objective&& objective, double low, double high) {
   const auto in_log = [&](double u) { return objective(std::exp(u)); };
   constexpr int kScan = 96;
   const double a = std::log(low), step = (std::log(high) - a) / kScan;
@@ -28,7 +34,7 @@ double fit_scale(Objective&& objective, double low, double high) {
   }
   const auto refined = boost::math::tools::brent_find_minima(in_log, a + std::max(0, best - 1) * step,
                                                              a + std::min(kScan, best + 1) * step, 40);
-  return std::exp(refined.first);
+  return {std::exp(refined.first), best == 0 || best == kScan};
 }
 
 }  // namespace
@@ -101,11 +107,22 @@ FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& 
     }
     return sum;
   };
-  s.lbar = fit_scale(radial_error, 1e-3 * s.mean_length, 1e3 * s.mean_length);
+  // A best l̄ at an end of the range (10⁻³ to 10³ mean lengths) means the paths lie almost all
+  // beyond the histogram's range or inside its first bin: no l̄ is measured (NaN).
+  const ScaleFit radial = fit_scale(radial_error, 1e-3 * s.mean_length, 1e3 * s.mean_length);
+  s.lbar = radial.at_range_end ? std::numeric_limits<double>::quiet_NaN() : radial.value;
   s.lbar_rms = std::sqrt(radial_error(s.lbar) / lengths.bins);
 
-  // Angular part of (3.24): α₀ against L(l_max, α) normalised to its value at 2π.
+  // Angular part of (3.24): α₀ against L(l_max, α) normalised to its value at 2π.  With no path
+  // shorter than l_max there is no angular distribution to fit (NaN).  α₀ at the upper end of its
+  // range (10⁴) is the isotropic limit of (3.24), at the lower end (10⁻⁴) paths exactly along x.
   const double below_max = s.length_cumulative.back();
+  if (!(below_max > 0.0)) {
+    s.alpha0 = s.alpha0_rms = std::numeric_limits<double>::quiet_NaN();
+    s.angular_cumulative.assign(na, s.alpha0);
+    s.angular_fit.assign(na, s.alpha0);
+    return s;
+  }
   for (std::size_t a = 0; a < na; ++a) s.angular_cumulative.push_back(s.cumulative[(nl - 1) * na + a] / below_max);
   const auto angular_error = [&](double alpha0) {
     double sum = 0.0;
@@ -115,7 +132,7 @@ FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& 
     }
     return sum;
   };
-  s.alpha0 = fit_scale(angular_error, 1e-4, 1e4);
+  s.alpha0 = fit_scale(angular_error, 1e-4, 1e4).value;
   s.alpha0_rms = std::sqrt(angular_error(s.alpha0) / angles.bins);
   for (int a = 0; a < angles.bins; ++a) s.angular_fit.push_back(free_path_angular_cumulative(angles.edge(a + 1), s.alpha0));
   return s;

@@ -29,10 +29,12 @@ struct FreePathSummary {
   double paths = 0.0;
   double mean_length = 0.0;  // ⟨l⟩ over all paths (exact sums, not binned)
   double mean_speed = 0.0;
-  // (3.24), angular part: α₀ fitted to L(l_max, α) (normalised to 0 at α = 0 and 1 at 2π).
+  // (3.24), angular part: α₀ fitted to L(l_max, α) (normalised to 0 at α = 0 and 1 at 2π) over
+  // [10⁻⁴, 10⁴] (10⁴: isotropic); NaN when no path is shorter than l_max.
   double alpha0 = 0.0;
   double alpha0_rms = 0.0;  // rms residual of that fit
-  // (3.24), radial part: l̄ fitted to L(l, 2π) = erf(√(l/l̄)) by least squares (the thesis's way).
+  // (3.24), radial part: l̄ fitted to L(l, 2π) = erf(√(l/l̄)) by least squares (the thesis's way);
+  // NaN when the best l̄ lies at an end of the searched range [10⁻³, 10³] ⟨l⟩ (no scale fits).
   double lbar = 0.0;
   double lbar_rms = 0.0;
   double l0_matched = 0.0;          // maximum-likelihood l₀ of (3.36): 2⟨l⟩

@@ -68,7 +68,7 @@ F1Estimate estimate(const SnapshotBins& bins, const std::vector<double>& multipl
   }
   F1Estimate e;
   e.cumulative = cumulative_function(counts, total, grid);
-  e.once = fit_once(e.cumulative);
+  e.once = fit_once(e.cumulative, fit_speed_max);
   e.angular = fit_quadratic_exponent(e.once, grid.angle_bins, options.fit_speeds, fit_speed_max);
   const SineSeries dimensionless = fit_sine_series(e.angular);
   e.series = rescale_speed(dimensionless, scale);

@@ -1,5 +1,6 @@
 #include "distribution/once_fitted.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granule::distribution {
@@ -69,22 +70,36 @@ SpeedFit fit_speed(const CumulativeFunction& c) {
   return fit;
 }
 
-constexpr int kAngularParameters = 1 + AngularFit::kHarmonics * (1 + AngularFit::kPowers);
+// The harmonics p of (5.21) that take part in the ψ fit; the others have α_p = 0.
+using HarmonicSet = std::array<bool, AngularFit::kHarmonics>;
 
-void unpack(const Eigen::VectorXd& x, AngularFit& fit) {
+int parameter_count(const HarmonicSet& active) {
+  int count = 1;
+  for (const bool a : active) count += a ? 1 + AngularFit::kPowers : 0;
+  return count;
+}
+
+// x = (β, then per active harmonic α_p, d_p2 … d_p6).
+void unpack(const Eigen::VectorXd& x, const HarmonicSet& active, AngularFit& fit) {
   fit.beta = x[0];
+  int next = 1;
   for (int p = 0; p < AngularFit::kHarmonics; ++p) {
-    fit.alpha[p] = x[1 + p];
-    for (int m = 0; m < AngularFit::kPowers; ++m) fit.d[p][m] = x[1 + AngularFit::kHarmonics + p * AngularFit::kPowers + m];
+    fit.alpha[p] = 0.0;
+    fit.d[p].fill(0.0);
+    if (!active[p]) continue;
+    fit.alpha[p] = x[next++];
+    for (int m = 0; m < AngularFit::kPowers; ++m) fit.d[p][m] = x[next++];
   }
 }
 
-Eigen::VectorXd pack(const AngularFit& fit) {
-  Eigen::VectorXd x(kAngularParameters);
+Eigen::VectorXd pack(const AngularFit& fit, const HarmonicSet& active) {
+  Eigen::VectorXd x(parameter_count(active));
   x[0] = fit.beta;
+  int next = 1;
   for (int p = 0; p < AngularFit::kHarmonics; ++p) {
-    x[1 + p] = fit.alpha[p];
-    for (int m = 0; m < AngularFit::kPowers; ++m) x[1 + AngularFit::kHarmonics + p * AngularFit::kPowers + m] = fit.d[p][m];
+    if (!active[p]) continue;
+    x[next++] = fit.alpha[p];
+    for (int m = 0; m < AngularFit::kPowers; ++m) x[next++] = fit.d[p][m];
   }
   return x;
 }
@@ -133,14 +148,14 @@ AngularFit initial_angular(const CumulativeFunction& c, const Eigen::VectorXd& s
   return fit;
 }
 
-AngularFit fit_angular(const CumulativeFunction& c) {
+AngularFit fit_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma, const AngularFit& start,
+                       const HarmonicSet& active) {
   const int nv = c.grid.speed_bins, nt = c.grid.angle_bins;
-  const Eigen::VectorXd sigma = psi_sigma(c);
-  AngularFit fit = initial_angular(c, sigma);
-  Eigen::VectorXd x = pack(fit);
+  AngularFit fit;
+  Eigen::VectorXd x = pack(start, active);
   const auto residual = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r) {
     AngularFit trial;
-    unpack(y, trial);
+    unpack(y, active, trial);
     Eigen::MatrixXd amplitude(nv, AngularFit::kHarmonics), sine(AngularFit::kHarmonics, nt);
     for (int p = 1; p <= AngularFit::kHarmonics; ++p) {
       for (int k = 1; k <= nv; ++k) amplitude(k - 1, p - 1) = trial.amplitude(p, c.grid.speed_edge(k));
@@ -150,13 +165,58 @@ AngularFit fit_angular(const CumulativeFunction& c) {
     for (int k = 1; k <= nv; ++k)
       for (int l = 0; l < nt; ++l) r[(k - 1) * nt + l] = (model(k - 1, l) - c.psi(k, l)) / sigma[k];
   };
-  fit.report = levenberg_marquardt(residual, static_cast<Eigen::Index>(nv) * nt, x);
-  unpack(x, fit);
+  const Eigen::Index residuals = static_cast<Eigen::Index>(nv) * nt;
+  if (x.size() > 1) {
+    fit.report = levenberg_marquardt(residual, residuals, x);
+  } else {  // no harmonic left: ψ* = 0, nothing to minimise
+    Eigen::VectorXd r(residuals);
+    residual(x, r);
+    fit.report = {true, "no harmonic resolved", 1, r.norm(), r.norm() / std::sqrt(static_cast<double>(residuals))};
+  }
+  unpack(x, active, fit);
   return fit;
+}
+
+// A_p = α_p(1 − e^{−Q_p}) rises from 0 to its asymptote α_p (5.23).  Fitted noise can make it dip
+// a little past 0 (Q_p slightly negative: down to −0.2 for the weakest harmonic of an anisotropic
+// Gaussian, resolved at ~6σ); a dip by more than half the asymptote, Q_p < −log(3/2), means that
+// Q_p is not determined by the data.
+constexpr double kLowestQ = -0.4054651081081644;  // −log(3/2)
+
+// The harmonics whose Q_p falls below kLowestQ at speeds up to `speed_limit`, on a grid finer
+// than the bins (Q_p can dip between two edges).
+HarmonicSet undetermined_harmonics(const AngularFit& fit, const HarmonicSet& active, int speed_bins, double speed_limit) {
+  const int speeds = 4 * speed_bins;
+  HarmonicSet undetermined{};
+  for (int p = 1; p <= AngularFit::kHarmonics; ++p)
+    for (int k = 1; k <= speeds && active[p - 1] && !undetermined[p - 1]; ++k)
+      undetermined[p - 1] = !(fit.q(p, speed_limit * k / speeds) >= kLowestQ);
+  return undetermined;
 }
 
 }  // namespace
 
-OnceFitted fit_once(const CumulativeFunction& c) { return {fit_speed(c), fit_angular(c)}; }
+// A harmonic that the data do not resolve leaves its (α_p, Q_p) undetermined (only the product
+// A_p ≈ 0 is fitted), and Q_p can wander to huge coefficients whose derivative ψ*_θu spikes
+// between the bin edges or below the first one, so that f̃* is distorted or no density at all
+// (seen on isotropic Maxwellian samples: −log f̃* then gives coefficients off by 6–10⁴ σ, or NaN).
+// The thesis chooses the number of harmonics in (5.21) by the quality of the fit; here all four
+// are fitted, and while some are undetermined those are dropped and the rest refitted.  Fits
+// whose harmonics are all determined are unchanged.
+OnceFitted fit_once(const CumulativeFunction& c, double speed_limit) {
+  OnceFitted once;
+  once.speed = fit_speed(c);
+  const Eigen::VectorXd sigma = psi_sigma(c);
+  const AngularFit start = initial_angular(c, sigma);
+  HarmonicSet active;
+  active.fill(true);
+  while (true) {
+    once.angular = fit_angular(c, sigma, start, active);
+    const HarmonicSet drop = undetermined_harmonics(once.angular, active, c.grid.speed_bins, speed_limit);
+    if (std::none_of(drop.begin(), drop.end(), [](bool d) { return d; })) break;
+    for (int p = 0; p < AngularFit::kHarmonics; ++p) active[p] = active[p] && !drop[p];
+  }
+  return once;
+}
 
 }  // namespace granule::distribution

@@ -48,7 +48,9 @@ struct OnceFitted {
 };
 
 // Fits φ* to φ and ψ* to ψ by Levenberg–Marquardt, each residual weighted by the binomial
-// standard deviation of the counted fraction it comes from.
-OnceFitted fit_once(const CumulativeFunction& c);
+// standard deviation of the counted fraction it comes from.  A harmonic of (5.21) whose A_p dips
+// below 0 by more than half its asymptote α_p at speeds up to `speed_limit` (the range the twice
+// fit uses) is not determined by the data: it is dropped (α_p = 0, Q_p = 0) and the rest refitted.
+OnceFitted fit_once(const CumulativeFunction& c, double speed_limit);
 
 }  // namespace granule::distribution

@@ -2,15 +2,20 @@
 // hard-disk gas in equilibrium, whose single-particle distribution is the Maxwellian: the
 // thesis's reference 2T b_0^(2) = 1, √(2T) b_0^(1) = 0, b_0^(0) = log(2πT), no harmonics, and the
 // kinetic stresses of f̃*, f̃** equal to the direct one (Fig 5.7) within the thesis's 1% and 5%.
+// The bootstrap errors used as tolerances must themselves be of the size the Cramér–Rao bound
+// for independent Maxwellian samples sets (unit/maxwellian_cramer_rao.hpp), so that a broken
+// replicate cannot widen them.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "cells/cell_grid.hpp"
 #include "distribution/f1_analysis.hpp"
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"
+#include "unit/maxwellian_cramer_rao.hpp"
 
 namespace granule {
 namespace {
@@ -48,8 +53,9 @@ TEST(F1ElasticEquilibrium, MaxwellianIsRecovered) {
   options.speed_bins = options.angle_bins = 48;
   const WindowResult r = analyse_window(windows[0], options);
   ASSERT_TRUE(r.analysed) << r.warning;
-  EXPECT_TRUE(r.estimate.once.speed.report.converged && r.estimate.once.angular.report.converged &&
-              r.estimate.series.report.converged);
+  // (The ψ fit is a fit of noise here: along its degenerate directions, α_p → 0 with Q_p free,
+  // it may exhaust its evaluation limit, so its convergence is not required.)
+  EXPECT_TRUE(r.estimate.once.speed.report.converged && r.estimate.series.report.converged);
   const SineSeries& b = r.estimate.series;
   const SineSeries& e = r.errors.series;
   const double s = r.speed_scale, t = r.temperature;
@@ -63,6 +69,24 @@ TEST(F1ElasticEquilibrium, MaxwellianIsRecovered) {
     for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(b.amplitude[j][i]), 4.0 * e.amplitude[j][i]) << "j " << j + 1 << " i " << i;
   EXPECT_NEAR(r.estimate.once_integrals.moment.trace() / r.estimate.direct.trace(), 1.0, 0.01);
   EXPECT_NEAR(r.estimate.twice_integrals.moment.trace() / r.estimate.direct.trace(), 1.0, 0.05);
+
+  // The bound for independent samples is a lower bound here too (snapshots one collision per
+  // particle apart are positively correlated).  Bootstrap errors from 12 replicates scatter by
+  // ~21%; the estimator's variance is ≤ 1.5 × the bound (unit tier) and snapshot correlation can
+  // add as much again: errors within [0.4, 2.5] × the bound.
+  const Eigen::Matrix2d bound = test_statistics::maxwellian_means_bound_times_n() / static_cast<double>(r.samples);
+  const struct {
+    const char* name;
+    double deviation, error, sigma;
+  } means[] = {{"sqrt(2T) b0^(1)", s * b.mean[1], s * e.mean[1], std::sqrt(bound(0, 0))},
+               {"2T b0^(2) - 1", 2.0 * t * b.mean[2] - 1.0, 2.0 * t * e.mean[2], std::sqrt(bound(1, 1))},
+               {"b0^(0) - log(2 pi T)", b.mean[0] - std::log(2.0 * M_PI * t), e.mean[0], std::sqrt(bound(1, 1))}};
+  for (const auto& m : means) {
+    std::printf("%zu samples: %s = %.5f, bootstrap error %.5f, Cramér–Rao σ %.5f (z %.2f; error / σ %.2f)\n", r.samples,
+                m.name, m.deviation, m.error, m.sigma, m.deviation / m.sigma, m.error / m.sigma);
+    EXPECT_GT(m.error, 0.4 * m.sigma) << m.name;
+    EXPECT_LT(m.error, 2.5 * m.sigma) << m.name;
+  }
 }
 
 }  // namespace

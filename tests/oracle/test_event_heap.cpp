@@ -1,0 +1,205 @@
+// Oracle tier: the indexed event heap (src/events/event_heap.hpp) against a sorted reference.
+//
+// The heap holds one time per particle and never removes anyone: the engine "pops" by reading the
+// top and re-scheduling that particle.  The reference is an ordered multiset of (time, particle)
+// pairs beside a plain array of each particle's time.  After every operation the heap's top time
+// must equal the reference's smallest time and its top particle must be one holding that time (any
+// one of a tie); at intervals every particle's time_of() is compared.  The engine only stores
+// times ≥ now or +inf, but the class promises order for any non-NaN double, so the random times
+// include −inf, ±0, denormals, exact ties from a small pool, huge values and repeated moves of one
+// particle up and down; shift_times() is applied with the same subtraction in the reference (IEEE
+// subtraction is monotone, so a ≤ b still gives a − d ≤ b − d and order must survive).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <limits>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "events/event_heap.hpp"
+#include "init/random.hpp"
+
+namespace granule {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDenormal = std::numeric_limits<double>::denorm_min();
+
+class ReferenceQueue {
+ public:
+  void reset(std::int32_t particles) {
+    times_.assign(static_cast<std::size_t>(particles), kInf);
+    ordered_.clear();
+    for (std::int32_t i = 0; i < particles; ++i) ordered_.insert({kInf, i});
+  }
+  void update(std::int32_t particle, double time) {
+    double& slot = times_[static_cast<std::size_t>(particle)];
+    ordered_.erase(ordered_.find({slot, particle}));
+    slot = time;
+    ordered_.insert({time, particle});
+  }
+  void shift_times(double delta) {
+    ordered_.clear();
+    for (std::size_t i = 0; i < times_.size(); ++i) {
+      times_[i] -= delta;
+      ordered_.insert({times_[i], static_cast<std::int32_t>(i)});
+    }
+  }
+  double smallest() const { return ordered_.begin()->first; }
+  bool smallest_is_tied() const { return size() > 1 && std::next(ordered_.begin())->first == smallest(); }
+  double time_of(std::int32_t particle) const { return times_[static_cast<std::size_t>(particle)]; }
+  std::int32_t size() const { return static_cast<std::int32_t>(times_.size()); }
+
+ private:
+  std::vector<double> times_;
+  std::multiset<std::pair<double, std::int32_t>> ordered_;
+};
+
+// Random event times of every kind the class must order.
+class TimeSource {
+ public:
+  explicit TimeSource(std::uint64_t seed) : random_(seed) {
+    // A small pool of values drawn again and again: exact ties between many particles.
+    for (double& t : pool_) t = static_cast<double>(random_.below(1000)) * 0.125;
+  }
+  double any() {
+    switch (random_.below(10)) {
+      case 0: return kInf;
+      case 1: return pool_[random_.below(pool_.size())];
+      case 2: return static_cast<double>(random_.below(4)) * kDenormal;  // 0, and the three smallest denormals
+      case 3: return -static_cast<double>(random_.below(3)) * kDenormal;  // −0 and negative denormals
+      case 4: return random_.below(50) == 0 ? -kInf : -1e3 * random_.uniform();
+      case 5: return 1e300 * random_.uniform();
+      default: return 1e3 * random_.uniform();
+    }
+  }
+  // The engine's case: now + a delay, or +inf when nothing lies ahead.
+  double after(double now) { return random_.below(20) == 0 ? kInf : now + 10.0 * random_.uniform(); }
+  Random& random() { return random_; }
+
+ private:
+  Random random_;
+  std::array<double, 8> pool_{};
+};
+
+struct RunFigures {
+  std::int64_t operations = 0, pops = 0, ties_at_top = 0, shifts = 0;
+  std::vector<std::int32_t> tops;  // the heap's top after every operation (for determinism)
+};
+
+// Applies `operations` random operations to a heap of `particles`, checking it against the
+// reference after each; records the sequence of tops.
+RunFigures exercise(std::int32_t particles, std::uint64_t seed, std::int64_t operations) {
+  EventHeap heap;
+  ReferenceQueue reference;
+  TimeSource times(seed);
+  Random& random = times.random();
+  heap.reset(particles);
+  reference.reset(particles);
+  RunFigures figures;
+  for (std::int64_t op = 0; op < operations; ++op) {
+    const std::uint64_t choice = random.below(1000);
+    if (choice < 400) {  // pop: the engine re-schedules the top particle at or after the top time
+      const std::int32_t p = heap.top();
+      const double now = heap.top_time();
+      const double t = std::isfinite(now) ? times.after(now) : times.any();
+      heap.update(p, t);
+      reference.update(p, t);
+      ++figures.pops;
+    } else if (choice < 800) {  // any particle to any time
+      const auto p = static_cast<std::int32_t>(random.below(static_cast<std::uint64_t>(particles)));
+      const double t = times.any();
+      heap.update(p, t);
+      reference.update(p, t);
+    } else if (choice < 990) {  // one particle moved up and down repeatedly
+      const auto p = static_cast<std::int32_t>(random.below(static_cast<std::uint64_t>(particles)));
+      for (int k = 0; k < 6; ++k) {
+        const double t = k % 2 == 0 ? times.any() : reference.time_of(p) - 1.0;
+        heap.update(p, t);
+        reference.update(p, t);
+      }
+    } else if (choice < 999) {  // clock re-base: by the top time when finite (as the engine), else at random
+      const double top = heap.top_time();
+      const double delta = std::isfinite(top) ? top : 1e3 * random.uniform();
+      heap.shift_times(delta);
+      reference.shift_times(delta);
+      ++figures.shifts;
+    } else {
+      heap.reset(particles);
+      reference.reset(particles);
+    }
+    ++figures.operations;
+    const std::int32_t top = heap.top();
+    figures.tops.push_back(top);
+    const double smallest = reference.smallest();
+    // Compare by value: −0 and +0 are the same time, and a tie may put either particle on top.
+    EXPECT_EQ(heap.top_time(), smallest) << "operation " << op;
+    EXPECT_EQ(reference.time_of(top), smallest) << "operation " << op << ": top " << top;
+    if (reference.smallest_is_tied()) ++figures.ties_at_top;
+    if (op % 997 == 0 || op + 1 == operations) {
+      for (std::int32_t i = 0; i < particles; ++i) EXPECT_EQ(heap.time_of(i), reference.time_of(i)) << "particle " << i << " op " << op;
+    }
+    if (::testing::Test::HasFailure()) break;  // one failure explains itself; do not flood the log
+  }
+  return figures;
+}
+
+TEST(EventHeapOracle, EveryTopMatchesTheSortedReference) {
+  struct Case {
+    std::int32_t particles;
+    std::uint64_t seed;
+  };
+  for (const Case c : {Case{1, 1}, Case{2, 2}, Case{7, 3}, Case{64, 4}, Case{1000, 5}, Case{4096, 6}}) {
+    const RunFigures f = exercise(c.particles, c.seed, 120000);
+    std::printf("N = %4d seed %llu: %lld operations (%lld pops, %lld shifts), %lld tops tied with another particle\n",
+                c.particles, static_cast<unsigned long long>(c.seed), static_cast<long long>(f.operations),
+                static_cast<long long>(f.pops), static_cast<long long>(f.shifts), static_cast<long long>(f.ties_at_top));
+    ASSERT_FALSE(HasFailure()) << "N = " << c.particles << " seed " << c.seed;
+    if (c.particles > 2) {
+      EXPECT_GT(f.ties_at_top, 100) << "the ties were not exercised";
+    }
+  }
+}
+
+// Ties may be broken either way, but the same sequence of operations must give the same pops
+// (a trajectory depends on which of two simultaneous events runs first).
+TEST(EventHeapOracle, SameOperationsGiveTheSamePops) {
+  const RunFigures a = exercise(500, 77, 100000);
+  const RunFigures b = exercise(500, 77, 100000);
+  ASSERT_EQ(a.tops.size(), b.tops.size());
+  EXPECT_TRUE(a.tops == b.tops);
+}
+
+// Heap sort: draining a heap (top, then re-schedule at +inf) gives the sorted times, each tied
+// group as a set of the particles holding that time.
+TEST(EventHeapOracle, DrainingGivesTheSortedTimes) {
+  Random random(9);
+  constexpr std::int32_t kParticles = 20000;
+  EventHeap heap;
+  heap.reset(kParticles);
+  std::vector<std::pair<double, std::int32_t>> sorted;
+  for (std::int32_t i = 0; i < kParticles; ++i) {
+    const double t = random.below(3) == 0 ? static_cast<double>(random.below(50)) : random.uniform();  // many ties
+    heap.update(i, t);
+    sorted.push_back({t, i});
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::pair<double, std::int32_t>> drained;
+  for (std::int32_t k = 0; k < kParticles; ++k) {
+    drained.push_back({heap.top_time(), heap.top()});
+    heap.update(heap.top(), kInf);
+  }
+  EXPECT_EQ(heap.top_time(), kInf);
+  // Equal as sequences of times; within a tie, equal as sets of particles.
+  for (std::int32_t k = 0; k < kParticles; ++k) ASSERT_EQ(drained[k].first, sorted[k].first) << "pop " << k;
+  std::sort(drained.begin(), drained.end());
+  EXPECT_TRUE(drained == sorted);
+}
+
+}  // namespace
+}  // namespace granule
