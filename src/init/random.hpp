@@ -1,10 +1,14 @@
 // Reproducible random numbers: xoshiro256** (Blackman & Vigna) seeded through splitmix64, with
-// uniform and Gaussian variates defined here so that a seed means the same trajectory on every
-// platform (std::normal_distribution is implementation-defined).
+// uniform and Gaussian variates defined here from integer and IEEE-exact floating-point
+// operations only, so that a seed means the same initial state on every platform, compiler and
+// libm (std::normal_distribution is implementation-defined, libm's log/sin/cos may differ in the
+// last bit).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+
+#include "init/portable_log.hpp"
 
 namespace granule {
 
@@ -28,19 +32,24 @@ class Random {
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
   // Uniform integer in [0, n).
   std::uint64_t below(std::uint64_t n) { return static_cast<std::uint64_t>(uniform() * static_cast<double>(n)); }
-  // Standard normal variate (Box–Muller; the second variate is kept for the next call).
+  // Standard normal variate by Marsaglia's polar method (the second variate of each pair is kept
+  // for the next call).  Only IEEE-exact operations (+ − × ÷ √) and portable_log enter, so a seed
+  // gives the same bits on every platform and libm, unlike Box–Muller's log/sin/cos.
   double normal() {
     if (has_spare_) {
       has_spare_ = false;
       return spare_;
     }
-    const double u1 = 1.0 - uniform();  // (0, 1]
-    const double u2 = uniform();
-    const double radius = std::sqrt(-2.0 * std::log(u1));
-    constexpr double kTwoPi = 6.283185307179586476925286766559;
-    spare_ = radius * std::sin(kTwoPi * u2);
+    double u = 0.0, v = 0.0, s = 0.0;
+    do {  // a uniform point of the unit disk (the origin excluded); 2 w − 1 is exact
+      u = 2.0 * uniform() - 1.0;
+      v = 2.0 * uniform() - 1.0;
+      s = u * u + v * v;
+    } while (s >= 1.0 || s == 0.0);
+    const double factor = std::sqrt(-2.0 * portable_log(s) / s);
+    spare_ = v * factor;
     has_spare_ = true;
-    return radius * std::cos(kTwoPi * u2);
+    return u * factor;
   }
 
  private:

@@ -1,10 +1,24 @@
 #include "observers/global_diagnostics.hpp"
 
-#include "analysis/cell_fields.hpp"
-
 #include <cmath>
 
 namespace granule {
+
+namespace {
+
+// T̄: the mean of T(r) over the occupied cells (thesis §1.4.3, after eq 1.7).
+double mean_cell_temperature(const CellFields& cells) {
+  double temperature_sum = 0.0;
+  int occupied = 0;
+  for (std::size_t c = 0; c < cells.grid.cells(); ++c) {
+    if (cells.count[c] == 0.0) continue;
+    temperature_sum += cells.temperature[c];
+    ++occupied;
+  }
+  return occupied > 0 ? temperature_sum / occupied : 0.0;
+}
+
+}  // namespace
 
 GlobalDiagnostics::GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y)
     : params_(params),
@@ -23,6 +37,12 @@ void GlobalDiagnostics::restart_interval(double t, std::int64_t collisions) {
   interval_collisions_ = collisions;
 }
 
+CellFields GlobalDiagnostics::cell_fields(const ParticleState& state, bool subtract_shear_profile) const {
+  CellMoments moments(grid_);
+  moments.add(state, frame_, subtract_shear_profile);
+  return fields_from_moments(moments, frame_, 0.0, subtract_shear_profile);
+}
+
 DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions) {
   const std::size_t n = state.size();
   const double nd = static_cast<double>(n);
@@ -31,10 +51,13 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   out.t = t;
   out.c = static_cast<double>(collisions) / nd;
 
-  // V(r) and T(r) of the coarse-graining cells (§1.4.3, eq 1.3).
-  CellMoments moments(grid_);
-  moments.add(state, frame_, false);
-  const CellFields cells = fields_from_moments(moments, frame_, 0.0, false);
+  // V(r) and T(r) of the coarse-graining cells (§1.4.3, eq 1.3), with velocities taken relative to
+  // the imposed mean flow u(y): otherwise the shear γ h across a cell of height h would count as
+  // heat (γ² h²/24 per disk), and T̄ would depend on the grid.
+  const CellFields cells = cell_fields(state, true);
+  out.temperature = mean_cell_temperature(cells);
+  out.temperature_thesis_cells = frame_.sheared() ? mean_cell_temperature(cell_fields(state, false)) : out.temperature;
+
   double kinetic = 0.0, fluct = 0.0, fluct_xy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double vx = state.vx[i], vy = state.vy[i];
@@ -48,20 +71,12 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   out.pressure_kinetic = 0.5 * fluct / area;
   out.shear_stress_kinetic = fluct_xy / area;
 
-  double temperature_sum = 0.0;
-  int occupied = 0;
-  for (std::size_t c = 0; c < grid_.cells(); ++c) {
-    if (cells.count[c] == 0.0) continue;
-    temperature_sum += cells.temperature[c];
-    ++occupied;
-  }
-  out.temperature = occupied > 0 ? temperature_sum / occupied : 0.0;
-
-  // Moments of the fluctuating velocity relative to the cell velocity (κ, eq 1.8; §2.1).
+  // Moments of the fluctuating velocity v' = v − u(y) − V(r), V(r) the cell mean of v − u (κ,
+  // eq 1.8; §2.1): the same fluctuation whose cell variances make T̄.
   double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t c = grid_.index(state.x[i], state.y[i]);
-    const double ux = state.vx[i] - cells.velocity_x[c];
+    const double ux = state.vx[i] - frame_.mean_flow(state.y[i]) - cells.velocity_x[c];
     const double uy = state.vy[i] - cells.velocity_y[c];
     const double u2 = ux * ux + uy * uy;
     m2 += u2;

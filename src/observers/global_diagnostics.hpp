@@ -1,5 +1,6 @@
 // The global time series of a run (thesis §1.4.3, §2.1, Figs 2.5–2.7, 3.6): kinetic energy,
-// the granular temperature T̄ (mean of cell temperatures, eq 1.3), the global fluctuation
+// the granular temperature T̄ (mean of cell temperatures, eq 1.3, with velocities relative to the
+// imposed shear profile; the thesis's plain cell definition beside it), the global fluctuation
 // temperature, flatness κ (1.8), two asymmetry measures, kinetic and collisional pressures
 // (half traces of 1.4 and 1.6) and the collision rate.  Collisional quantities are accumulated
 // from every collision record over the sampling interval.
@@ -7,6 +8,7 @@
 
 #include <cstdint>
 
+#include "analysis/cell_fields.hpp"
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
@@ -19,9 +21,10 @@ struct DiagnosticsSample {
   double t = 0.0;
   double c = 0.0;                     // collisions per particle, thesis convention (total / N)
   double kinetic_energy = 0.0;        // ½⟨v²⟩ per particle, lab frame
-  double temperature = 0.0;           // T̄: mean over occupied cells of T(r) (eq 1.3)
+  double temperature = 0.0;           // T̄: mean over occupied cells of T(r) (eq 1.3), v − u(y) in place of v
+  double temperature_thesis_cells = 0.0;  // the same with lab velocities (the thesis's T̄; = T̄ if periodic)
   double temperature_global = 0.0;    // ½⟨v'²⟩ with v' = v − u(y) (u = 0 for periodic boxes)
-  double flatness = 0.0;              // κ = ⟨v'⁴⟩ / ⟨v'²⟩², v' relative to the cell velocity
+  double flatness = 0.0;              // κ = ⟨v'⁴⟩ / ⟨v'²⟩², v' = v − u(y) − V(r) as in T̄
   double asymmetry_x = 0.0;           // ⟨v'_x³⟩ / ⟨v'²⟩^{3/2}
   double asymmetry_y = 0.0;           // ⟨v'_y³⟩ / ⟨v'²⟩^{3/2}
   double pressure_kinetic = 0.0;      // n T_global: half trace of (1.4) over the whole box
@@ -47,6 +50,9 @@ class GlobalDiagnostics final : public EventObserver {
   void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
+  // Fields of the coarse-graining cells, optionally of the velocities relative to u(y).
+  CellFields cell_fields(const ParticleState& state, bool subtract_shear_profile) const;
+
   SystemParams params_;
   ShearFrame frame_;
   FieldGrid grid_;  // coarse-graining cells of T̄ and κ
