@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <string_view>
 
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
@@ -13,24 +15,6 @@
 namespace granule::app {
 
 namespace {
-
-// The time-series columns kept in a checkpoint, one array each.
-template <typename Sample, typename Visit>
-void for_each_sample_field(Sample& s, Visit&& visit) {
-  visit("t", s.t);
-  visit("c", s.c);
-  visit("kinetic_energy", s.kinetic_energy);
-  visit("temperature", s.temperature);
-  visit("temperature_global", s.temperature_global);
-  visit("flatness", s.flatness);
-  visit("asymmetry_x", s.asymmetry_x);
-  visit("asymmetry_y", s.asymmetry_y);
-  visit("pressure_kinetic", s.pressure_kinetic);
-  visit("pressure_collisional", s.pressure_collisional);
-  visit("shear_stress_kinetic", s.shear_stress_kinetic);
-  visit("shear_stress_collisional", s.shear_stress_collisional);
-  visit("collision_rate", s.collision_rate);
-}
 
 std::int64_t collisions_for(const RunConfig& config, std::optional<double> c) {
   return c ? std::llround(*c * static_cast<double>(config.system.particles)) : kNoLimit;
@@ -87,11 +71,15 @@ void RunSession::restore_production(const StateArchive& archive) {
   sim_->add_observer(diagnostics_.get());
   const std::size_t rows = archive.get<double>("run/samples/t").size();
   samples_.assign(rows, {});
-  for (std::size_t k = 0; k < rows; ++k) {
-    for_each_sample_field(samples_[k], [&](const char* name, double& value) {
-      value = archive.get_sized<double>(std::string("run/samples/") + name, rows)[k];
-    });
-  }
+  DiagnosticsSample layout;
+  for_each_column(layout, [&](const char* name, double&) {
+    const auto& column = archive.get_sized<double>(std::string("run/samples/") + name, rows);
+    for (std::size_t k = 0; k < rows; ++k) {
+      for_each_column(samples_[k], [&](const char* field, double& value) {
+        if (field == std::string_view(name)) value = column[k];
+      });
+    }
+  });
   sampling_ = Schedule{config_.sample_every_collisions_per_particle, config_.sample_every_time};
   snapshotting_ = Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
   sampling_.start(system.particles);
@@ -114,17 +102,13 @@ void RunSession::save(StateArchive& archive) const {
   archive.put_integer("run/in_production", in_production() ? 1 : 0);
   if (!in_production()) return;
   diagnostics_->save(archive, "diagnostics/");
+  std::map<std::string, std::vector<double>> columns;
   const DiagnosticsSample layout;
-  for_each_sample_field(layout, [&](const char* name, const double&) {
-    std::vector<double> column;
-    column.reserve(samples_.size());
-    for (const DiagnosticsSample& s : samples_) {
-      for_each_sample_field(s, [&](const char* field, const double& value) {
-        if (std::string_view(field) == name) column.push_back(value);
-      });
-    }
-    archive.put(std::string("run/samples/") + name, std::move(column));
-  });
+  for_each_column(layout, [&](const char* name, const double&) { columns[name].reserve(samples_.size()); });
+  for (const DiagnosticsSample& sample : samples_) {
+    for_each_column(sample, [&](const char* name, const double& value) { columns[name].push_back(value); });
+  }
+  for (auto& [name, column] : columns) archive.put("run/samples/" + name, std::move(column));
   sampling_.save(archive, "run/sampling/");
   snapshotting_.save(archive, "run/snapshotting/");
   archive.put_integer("run/snapshot_frames", snapshots_->frames());

@@ -7,16 +7,16 @@
 namespace granule {
 
 std::string timeseries_header() {
-  return "t,c,kinetic_energy,temperature,temperature_thesis_cells,temperature_global,flatness,"
-         "asymmetry_x,asymmetry_y,pressure_kinetic,pressure_collisional,shear_stress_kinetic,"
-         "shear_stress_collisional,collision_rate\n";
+  std::string header;
+  const DiagnosticsSample layout;
+  for_each_column(layout, [&](const char* name, const double&) { header += (header.empty() ? "" : ",") + std::string(name); });
+  return header + "\n";
 }
 
 std::string timeseries_row(const DiagnosticsSample& s) {
-  return fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
-                     s.t, s.c, s.kinetic_energy, s.temperature, s.temperature_thesis_cells, s.temperature_global,
-                     s.flatness, s.asymmetry_x, s.asymmetry_y, s.pressure_kinetic, s.pressure_collisional,
-                     s.shear_stress_kinetic, s.shear_stress_collisional, s.collision_rate);
+  std::string row;
+  for_each_column(s, [&](const char*, const double& value) { row += fmt::format("{}{:.12g}", row.empty() ? "" : ",", value); });
+  return row + "\n";
 }
 
 void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples,

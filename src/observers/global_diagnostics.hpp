@@ -34,6 +34,25 @@ struct DiagnosticsSample {
   double collision_rate = 0.0;        // Δc / Δt over the interval
 };
 
+// The columns of the time series, in their order (timeseries.csv, checkpoints).
+template <typename Sample, typename Visit>
+void for_each_column(Sample& s, Visit&& visit) {
+  visit("t", s.t);
+  visit("c", s.c);
+  visit("kinetic_energy", s.kinetic_energy);
+  visit("temperature", s.temperature);
+  visit("temperature_thesis_cells", s.temperature_thesis_cells);
+  visit("temperature_global", s.temperature_global);
+  visit("flatness", s.flatness);
+  visit("asymmetry_x", s.asymmetry_x);
+  visit("asymmetry_y", s.asymmetry_y);
+  visit("pressure_kinetic", s.pressure_kinetic);
+  visit("pressure_collisional", s.pressure_collisional);
+  visit("shear_stress_kinetic", s.shear_stress_kinetic);
+  visit("shear_stress_collisional", s.shear_stress_collisional);
+  visit("collision_rate", s.collision_rate);
+}
+
 class GlobalDiagnostics final : public EventObserver {
  public:
   // cells_x × cells_y is the coarse-graining grid of T̄ and κ (independent of the engine's cells).
