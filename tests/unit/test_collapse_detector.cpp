@@ -221,13 +221,11 @@ TEST(CollapseDetector, GeometricPileUpTriggersWithinTheBound) {
   for (const PileUp pile : {PileUp{0.999, 1e-3}, PileUp{0.9999, 1e-4}}) expect_pile_up_found(pile, kNever);
 }
 
-// DISABLED: fails with the current detector.  Re-basing every 16 N events restores the clock's
-// precision (after a re-base t_now = Σ of the later delays, and delay/t_now ≈ (1 − r) r^j stays far
-// above 2⁻⁵³ for r = 0.999 over 16 N collisions), so the clock never freezes, while consecutive
-// windows shrink only by r^w = 0.37 > kRatio: the pile-up is never reported (the delays reach the
-// smallest denormal after 7·10⁵ collisions and then stay there).  Comparing each window with a
-// longer history than the previous one would catch it; enable this test with that change.
-TEST(CollapseDetector, DISABLED_SlowPileUpIsFoundDespiteClockReBasing) {
+// Re-basing every 16 N events restores the clock's precision (after a re-base t_now = Σ of the
+// later delays, and delay/t_now ≈ (1 − r) r^j stays far above 2⁻⁵³ for r = 0.999 over 16 N
+// collisions), so the clock never freezes, while consecutive windows shrink only by r^w = 0.37 >
+// kRatio: the detector must compare with a longer history than the previous window.
+TEST(CollapseDetector, SlowPileUpIsFoundDespiteClockReBasing) {
   expect_pile_up_found(PileUp{0.999, 1e-3}, kEngineRebase);
 }
 
