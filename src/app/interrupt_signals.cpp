@@ -19,6 +19,9 @@ InterruptSignals::InterruptSignals() {
   received_signal = 0;
   struct sigaction action {};
   action.sa_handler = on_signal;
+  // Restart interrupted system calls: a signal arriving while an output is being written must not
+  // turn into a write error (EINTR).
+  action.sa_flags = SA_RESTART;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, &previous_int);
   sigaction(SIGTERM, &action, &previous_term);

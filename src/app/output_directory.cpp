@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -84,10 +85,29 @@ void remove_end_of_run_outputs(const std::string& out) {
   remove_outputs(out, {"summary.json", "collisions.h5", "impact_parameters.csv", "free_paths.csv", "configuration.png"});
 }
 
-std::string first_physics_override(const std::vector<std::string>& overrides) {
+std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
+  fs::path aside = fs::path(out) / fmt::format("set_aside_after_frame_{}", frame);
+  for (int copy = 2; fs::exists(aside); ++copy) aside = fs::path(out) / fmt::format("set_aside_after_frame_{}_{}", frame, copy);
+  std::error_code error;
+  fs::create_directory(aside, error);
+  if (error) throw IoError(fmt::format("cannot create {}: {}", aside.string(), error.message()));
+  for (const std::string& name : run_output_names()) {
+    for (const char* suffix : {"", ".partial"}) {
+      const fs::path from = fs::path(out) / (name + suffix);
+      if (!fs::exists(from)) continue;
+      fs::rename(from, aside / (name + suffix), error);
+      if (error) throw IoError(fmt::format("cannot move {} aside: {}", from.string(), error.message()));
+    }
+  }
+  return aside.string();
+}
+
+std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed) {
   for (const std::string& assignment : overrides) {
     const std::string key = assignment.substr(0, assignment.find('='));
-    if (key.rfind("run.", 0) != 0 && key.rfind("output.", 0) != 0) return key;
+    const bool allowed = key.rfind("run.", 0) == 0 || key.rfind("output.", 0) == 0 ||
+                         std::find(also_allowed.begin(), also_allowed.end(), key) != also_allowed.end();
+    if (!allowed) return key;
   }
   return {};
 }

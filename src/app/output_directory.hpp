@@ -17,8 +17,12 @@ void prepare_new_output_directory(const std::string& out, bool force);
 // Before a run continues: the outputs written only at a run's end (summary, collision statistics,
 // picture) describe the earlier end, not the continued run.
 void remove_end_of_run_outputs(const std::string& out);
-// The first `--set` key outside run.* and output.*, or "" (a resumed run keeps its physics).
-std::string first_physics_override(const std::vector<std::string>& overrides);
+// Before a run continues from an earlier snapshot frame: its outputs move to a new subdirectory
+// `set_aside_after_frame_<K>` (returned), where nothing of them is lost.
+std::string set_aside_run_outputs(const std::string& out, std::int64_t frame);
+// The first `--set` key outside run.*, output.* and `also_allowed`, or "" (a resumed run keeps
+// its physics).
+std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed = {});
 // Refuses (exit 5) a run whose estimated peak memory exceeds what the machine has available.
 void check_memory_for_run(const RunConfig& config, const CellGrid& grid);
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
@@ -16,7 +17,10 @@
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/fields_file.hpp"
 #include "io/io_error.hpp"
+#include "io/snapshot_file.hpp"
+#include "io/timeseries_csv.hpp"
 
 namespace granule::app {
 
@@ -27,15 +31,22 @@ struct RunOptions {
   std::vector<std::string> overrides;
   std::string out_dir;
   std::string resume_dir;
+  std::optional<std::int64_t> from_frame;
   bool force = false;
 };
+
+// With --from-frame the run takes another branch from an earlier state, so the TC model may be
+// switched on (the way out of an inelastic collapse); nothing else of the physics may change.
+const std::vector<std::string> kFromFrameKeys = {"system.tc_duration"};
 
 RunConfig configuration(const RunOptions& options, bool resume, const std::string& out) {
   if (resume) {
     // Only how long to run and what to write may change: anything else would be another run.
-    if (const std::string key = first_physics_override(options.overrides); !key.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("--set {}: a resumed run may only change run.* and output.* keys "
-                                                  "(the physics of {} is fixed by its config.toml)", key, out)};
+    const auto also_allowed = options.from_frame ? kFromFrameKeys : std::vector<std::string>{};
+    if (const std::string key = first_physics_override(options.overrides, also_allowed); !key.empty()) {
+      throw CommandFailure{kExitBadInput, fmt::format("--set {}: a resumed run may only change run.* and output.* keys{} "
+                                                      "(the physics of {} is fixed by its config.toml)", key,
+                                                      options.from_frame ? " and system.tc_duration" : "", out)};
     }
   }
   const ConfigResult parsed = resume ? load_config_file(out + "/config.toml", options.overrides)
@@ -88,6 +99,57 @@ std::unique_ptr<RunSession> resumed_session(const RunConfig& config, const CellG
   return session;
 }
 
+// The first of `names` that exists in `out`, as published or partial file ("" if none).
+std::string existing_output(const std::string& out, const std::string& name) {
+  for (const char* suffix : {"", ".partial"}) {
+    if (std::filesystem::exists(out + "/" + name + suffix)) return out + "/" + name + suffix;
+  }
+  return {};
+}
+
+std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const CellGrid& grid, const std::string& out,
+                                               std::int64_t frame) {
+  const std::string snapshots = existing_output(out, "snapshots.h5");
+  SnapshotRead read;
+  try {
+    if (snapshots.empty()) throw std::runtime_error("the run has no snapshot file");
+    read = read_snapshot(snapshots, frame);
+  } catch (const std::exception& error) {
+    throw CommandFailure{kExitBadInput, fmt::format("--from-frame {}: cannot read {}: {}", frame, out, error.what())};
+  }
+  if (read.metadata.system.particles != config.system.particles || read.metadata.system.diameter != config.system.diameter) {
+    throw CommandFailure{kExitBadInput, fmt::format("{} does not match {}/config.toml", snapshots, out)};
+  }
+  const std::int64_t k = frame < 0 ? read.frames + frame : frame;
+  check_memory_for_run(config, grid);
+  // Everything the run wrote moves aside; frames and rows up to frame K come back.
+  const std::string aside = set_aside_run_outputs(out, k);
+  RunSession::FrameStart start;
+  start.frame = read.frame;
+  start.snapshot_frames = k + 1;
+  const std::string from_snapshots = existing_output(aside, "snapshots.h5");
+  std::filesystem::copy_file(from_snapshots, out + "/snapshots.h5.partial");
+  const double c = read.frame.collisions_per_particle;
+  if (const std::string rows = existing_output(aside, "timeseries.csv"); !rows.empty()) {
+    for (const DiagnosticsSample& sample : read_timeseries(rows)) {
+      if (sample.c <= c) start.samples.push_back(sample);
+    }
+  }
+  if (const std::string fields = existing_output(aside, "fields.h5"); !fields.empty() && config.fields.enabled) {
+    for (const double frame_c : read_fields_frame_c(fields)) {
+      if (frame_c > c) break;
+      ++start.fields_frames;
+      start.fields_frame_at_start = frame_c == c;
+    }
+    std::filesystem::copy_file(fields, out + "/fields.h5.partial");
+  }
+  write_file_atomically(out + "/config.toml", to_toml(config));
+  auto session = std::make_unique<RunSession>(config, grid, out, start);
+  fmt::print("continuing {} from frame {} (t = {:.6g}, c = {:.6g}); the later outputs are in {}\n", out, k,
+             read.frame.clock.time, c, aside);
+  return session;
+}
+
 void print_header(const RunConfig& config) {
   const SystemParams& s = config.system;
   fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, s.particles,
@@ -129,7 +191,9 @@ int run(const RunOptions& options) {
   try {
     const RunConfig config = configuration(options, resume, out);
     const CellGrid grid = engine_grid(config);
-    std::unique_ptr<RunSession> session = resume ? resumed_session(config, grid, out) : new_session(config, grid, options);
+    std::unique_ptr<RunSession> session = !resume                ? new_session(config, grid, options)
+                                          : options.from_frame ? from_frame_session(config, grid, out, *options.from_frame)
+                                                               : resumed_session(config, grid, out);
     print_header(config);
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
@@ -184,6 +248,11 @@ void add_run_command(CLI::App& root) {
                       "Continue the run in this output directory from its checkpoint, bit for bit (extend it with e.g. "
                       "--set run.until_collisions_per_particle=200)")
       ->check(CLI::ExistingDirectory);
+  command->add_option("--from-frame", options->from_frame,
+                      "With --resume: continue from snapshot frame K instead of the checkpoint (negative counts from "
+                      "the end), e.g. with --set system.tc_duration=... after an inelastic collapse; the later outputs "
+                      "are moved to set_aside_after_frame_K")
+      ->needs("--resume");
   command->callback([options] { throw CLI::RuntimeError(run(*options)); });
 }
 

@@ -63,6 +63,22 @@ void RunMeasurements::start(Simulation& sim) {
   }
 }
 
+void RunMeasurements::continue_from_frame(Simulation& sim, std::int64_t fields_frames, bool frame_written) {
+  set_up(sim);
+  interval_start_t_ = sim.time();
+  interval_start_c_ = sim.collisions_per_particle();
+  if (collisional_) collisional_->restart(sim.time());
+  if (config_.fields.enabled) {
+    fields_schedule_.advance(sim);
+    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", fields_frames);
+    if (frame_written) last_fields_collisions_ = sim.collisions();
+  }
+  if (density_) {
+    density_->update(sim.state());
+    after_step(sim, false);
+  }
+}
+
 void RunMeasurements::resume(Simulation& sim, const StateArchive& archive, const std::string& prefix) {
   set_up(sim);
   if (config_.fields.enabled) {

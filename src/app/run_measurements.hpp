@@ -27,6 +27,10 @@ class RunMeasurements {
 
   // Attach the observers and write the first fields frame.
   void start(Simulation& sim);
+  // Continue from a snapshot frame instead: fields.h5 keeps its first `fields_frames` frames (the
+  // last of them at this frame if `frame_written`), averaging intervals and collision statistics
+  // start afresh here.
+  void continue_from_frame(Simulation& sim, std::int64_t fields_frames, bool frame_written);
   // Continue from a checkpoint instead: the files keep the frames written before it.
   void resume(Simulation& sim, const StateArchive& archive, const std::string& prefix);
   void save(StateArchive& archive, const std::string& prefix) const;

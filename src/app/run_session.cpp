@@ -44,6 +44,30 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
   if (checkpoint.integer("run/in_production") != 0) restore_production(checkpoint);
 }
 
+RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start)
+    : config_(config), grid_(grid), out_(std::move(out)) {
+  const SystemParams& system = config.system;
+  sim_ = std::make_unique<Simulation>(system, grid, start.frame.particles, start.frame.clock);
+  segment_start_collisions_ = sim_->collisions();
+  until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
+  until_time_ = config.until_time.value_or(kInf);
+  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config.diagnostic_cells.first, config.diagnostic_cells.second);
+  sim_->add_observer(diagnostics_.get());
+  diagnostics_->restart_interval(sim_->time(), sim_->collisions());
+  samples_ = start.samples;
+  sampling_ = Schedule{config.sample_every_collisions_per_particle, config.sample_every_time};
+  snapshotting_ = Schedule{config.snapshot_every_collisions_per_particle, config.snapshot_every_time};
+  sampling_.start(system.particles);
+  snapshotting_.start(system.particles);
+  sampling_.advance(*sim_);
+  snapshotting_.advance(*sim_);
+  snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", start.snapshot_frames);
+  last_snapshot_events_ = sim_->events();
+  measurements_ = std::make_unique<RunMeasurements>(config, out_);
+  measurements_->continue_from_frame(*sim_, start.fields_frames, start.fields_frame_at_start);
+  write_timeseries();
+}
+
 void RunSession::start_production() {
   const SystemParams& system = config_.system;
   sim_->start_production(system.restitution);
@@ -135,7 +159,7 @@ void RunSession::take_sample() {
   measurements_->on_sample(state, sim_->collisions());
 }
 
-void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_, ""); }
+void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }
 
 void RunSession::write_due_outputs() {
   if (snapshotting_.due(*sim_)) {

@@ -31,6 +31,16 @@ class RunSession {
   RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial);
   // A run continued from its checkpoint in `out`.
   RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint);
+  // A run continued from snapshot frame K in `out` (whose later frames and rows were set aside):
+  // the same physical state and clock with new round-off, measurements restarted at the frame.
+  struct FrameStart {
+    SnapshotFrame frame;
+    std::int64_t snapshot_frames = 0;  // frames 0..K kept in snapshots.h5
+    std::vector<DiagnosticsSample> samples;  // rows up to the frame
+    std::int64_t fields_frames = 0;    // fields frames up to the frame
+    bool fields_frame_at_start = false;  // the last of them is at the frame itself
+  };
+  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start);
 
   // Run until the configured end, collapse, no events, or `*interrupt` (set by a signal).
   StopReason run(const volatile std::sig_atomic_t* interrupt);

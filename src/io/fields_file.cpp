@@ -125,4 +125,12 @@ FieldGrid read_fields_grid(hid_t file) {
   return grid;
 }
 
+std::vector<double> read_fields_frame_c(const std::string& path) {
+  h5::Handle file = h5::open_file(path);
+  std::vector<double> c(static_cast<std::size_t>(h5::complete_frames(file.get())));
+  for (std::size_t k = 0; k < c.size(); ++k) h5::read_frame(file.get(), "/frames/c", H5T_NATIVE_DOUBLE, &c[k], k);
+  file.close();
+  return c;
+}
+
 }  // namespace granule

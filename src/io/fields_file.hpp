@@ -52,5 +52,7 @@ class FieldsWriter {
 
 // The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y).
 FieldGrid read_fields_grid(hid_t file);
+// Collisions per particle of each complete frame of a fields file (published or partial).
+std::vector<double> read_fields_frame_c(const std::string& path);
 
 }  // namespace granule

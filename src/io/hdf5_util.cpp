@@ -384,7 +384,10 @@ void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>&
   Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, location, name);
   Handle dataset = owned(H5Dcreate2(location, name, H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
                          H5Dclose, location, "create dataset", name);
-  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), location, "write dataset", name);
+  // An empty dataset (a window that collected nothing) has no buffer to write: HDF5 refuses one.
+  if (!data.empty()) {
+    check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), location, "write dataset", name);
+  }
   dataset.close();
   properties.close();
   space.close();

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
 #include "io/atomic_file.hpp"
 
 namespace granule {
@@ -19,11 +24,35 @@ std::string timeseries_row(const DiagnosticsSample& s) {
   return row + "\n";
 }
 
-void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples,
-                      const std::string& previous_rows) {
-  std::string content = timeseries_header() + previous_rows;
+void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples) {
+  std::string content = timeseries_header();
   for (const auto& sample : samples) content += timeseries_row(sample);
   write_file_atomically(path, content);
+}
+
+std::vector<DiagnosticsSample> read_timeseries(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error("cannot read " + path);
+  std::string line;
+  std::getline(file, line);
+  if (line + "\n" != timeseries_header()) throw std::runtime_error(path + " has not the columns of this version");
+  std::vector<DiagnosticsSample> samples;
+  for (int number = 2; std::getline(file, line); ++number) {
+    std::istringstream row(line);
+    DiagnosticsSample sample;
+    bool whole = true;
+    for_each_column(sample, [&](const char*, double& value) {
+      std::string cell;
+      whole = whole && std::getline(row, cell, ',') && !cell.empty();
+      if (!whole) return;
+      char* end = nullptr;
+      value = std::strtod(cell.c_str(), &end);
+      whole = *end == '\0';
+    });
+    if (!whole) throw std::runtime_error(path + ", line " + std::to_string(number) + ": not a whole row");
+    samples.push_back(sample);
+  }
+  return samples;
 }
 
 }  // namespace granule

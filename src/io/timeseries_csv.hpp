@@ -10,8 +10,10 @@ namespace granule {
 
 std::string timeseries_header();
 std::string timeseries_row(const DiagnosticsSample& sample);
-// Rewrite the whole file atomically; `previous_rows` (CSV lines of a resumed run) come first.
-void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples,
-                      const std::string& previous_rows = {});
+// Rewrite the whole file atomically.
+void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples);
+// The rows of a file written by write_timeseries (values to the 12 digits it keeps).  Throws
+// std::runtime_error naming the file and line when a row is not whole.
+std::vector<DiagnosticsSample> read_timeseries(const std::string& path);
 
 }  // namespace granule

@@ -99,6 +99,15 @@ check((WORK / "replay" / "fields.h5").exists(), "replay writes fields with the c
 result = granule("analyze", "collisions", str(WORK / "plain"), "--frame", "7")
 check(result.returncode == 2 and "--frame" in result.stderr, f"bad frame: {result.stderr}")
 
+# Windows that collect nothing give empty statistics, not a failure.
+empty = WORK / "empty_windows"
+result = granule("run", "--out", empty, "--set", "system.particles=500", "--set", "run.until_collisions_per_particle=2",
+                 "--set", "collisions.free_paths=true", "--set", "collisions.density_windows=[[1e9, 2e9]]",
+                 "--set", "collisions.speed_windows=[[1e6, 2e6]]")
+check(result.returncode == 0, f"empty windows: {result.stderr[-300:]}")
+with h5py.File(empty / "collisions.h5") as f:
+    check(f["free_paths/density_window_0"].attrs["paths"] == 0, "an empty density window is written with 0 paths")
+
 # Bad input: clear error naming the key, exit code 2, nothing written.
 bad = WORK / "bad"
 result = granule("run", "--out", str(bad), "--set", "collisions.density_windows=[[2, 1]]")
