@@ -110,7 +110,8 @@ void write_fit(hid_t group, const std::string& prefix, const FitReport& report) 
 }
 
 void write_window(hid_t file, int index, const WindowResult& r, const Curves& c) {
-  const hid_t g = create_group(file, fmt::format("windows/{:03d}", index).c_str());
+  Handle group(create_group(file, fmt::format("windows/{:03d}", index).c_str()), H5Gclose);
+  const hid_t g = group.get();
   write_double(g, "density_center", r.density_window.center);
   write_double(g, "density_half_width", r.density_window.half_width);
   write_double(g, "temperature_center", r.temperature_window.center);
@@ -179,42 +180,38 @@ void write_window(hid_t file, int index, const WindowResult& r, const Curves& c)
   write_dataset(g, "f_once_vs_angle", {np}, c.f_angle_once);
   write_dataset(g, "f_twice_vs_angle", {np}, c.f_angle_twice);
   write_dataset(g, "f_jr_vs_angle", {np}, c.f_angle_jr);
-  H5Gclose(g);
+  group.close();
 }
 
+// Written as `<path>.partial` and given its final name only once its close succeeded; a failure
+// (IoError) leaves the `.partial`.
 void write_hdf5(const std::string& path, const F1RunDescription& run, const std::vector<WindowResult>& windows,
                 const std::vector<Curves>& curves) {
-  const std::string partial = path + ".partial";
-  const hid_t file = create_partial_file(path, kFormat, kFormatVersion, kVersion);
-  try {
-    const SnapshotMetadata& m = run.metadata;
-    write_string_attribute(file, "source", std::filesystem::absolute(run.source).string());
-    write_int(file, "particles", m.system.particles);
-    const double box[2] = {m.system.length_x, m.system.length_y};
-    write_attribute(file, "box", H5T_NATIVE_DOUBLE, box, 2);
-    write_double(file, "area_fraction", m.area_fraction);
-    write_double(file, "restitution", m.system.restitution);
-    write_string_attribute(file, "boundary", m.boundary);
-    write_double(file, "shear_velocity", m.system.shear_velocity);
-    const int cells[2] = {run.cells_x, run.cells_y};
-    write_attribute(file, "cells", H5T_NATIVE_INT, cells, 2);
-    write_int(file, "from_frame", run.from_frame);
-    write_int(file, "frames_used", run.frames_used);
-    write_int(file, "subtract_shear_profile", run.subtract_shear_profile ? 1 : 0);
-    write_int(file, "speed_bins", run.options.speed_bins);
-    write_int(file, "angle_bins", run.options.angle_bins);
-    write_double(file, "fit_quantile", run.options.fit_quantile);
-    write_int(file, "bootstrap", run.options.bootstrap);
-    write_int(file, "bootstrap_seed", static_cast<long long>(run.options.seed));
-    write_int(file, "min_samples", static_cast<long long>(run.options.min_samples));
-    H5Gclose(create_group(file, "windows"));
-    for (std::size_t w = 0; w < windows.size(); ++w) write_window(file, static_cast<int>(w), windows[w], curves[w]);
-  } catch (...) {
-    H5Fclose(file);
-    std::filesystem::remove(partial);
-    throw;
-  }
-  publish_partial_file(file, path);
+  PartialFile partial(path, kFormat, kFormatVersion, kVersion);
+  const hid_t file = partial.get();
+  const SnapshotMetadata& m = run.metadata;
+  write_string_attribute(file, "source", std::filesystem::absolute(run.source).string());
+  write_int(file, "particles", m.system.particles);
+  const double box[2] = {m.system.length_x, m.system.length_y};
+  write_attribute(file, "box", H5T_NATIVE_DOUBLE, box, 2);
+  write_double(file, "area_fraction", m.area_fraction);
+  write_double(file, "restitution", m.system.restitution);
+  write_string_attribute(file, "boundary", m.boundary);
+  write_double(file, "shear_velocity", m.system.shear_velocity);
+  const int cells[2] = {run.cells_x, run.cells_y};
+  write_attribute(file, "cells", H5T_NATIVE_INT, cells, 2);
+  write_int(file, "from_frame", run.from_frame);
+  write_int(file, "frames_used", run.frames_used);
+  write_int(file, "subtract_shear_profile", run.subtract_shear_profile ? 1 : 0);
+  write_int(file, "speed_bins", run.options.speed_bins);
+  write_int(file, "angle_bins", run.options.angle_bins);
+  write_double(file, "fit_quantile", run.options.fit_quantile);
+  write_int(file, "bootstrap", run.options.bootstrap);
+  write_int(file, "bootstrap_seed", static_cast<long long>(run.options.seed));
+  write_int(file, "min_samples", static_cast<long long>(run.options.min_samples));
+  Handle(create_group(file, "windows"), H5Gclose).close();
+  for (std::size_t w = 0; w < windows.size(); ++w) write_window(file, static_cast<int>(w), windows[w], curves[w]);
+  partial.publish();
 }
 
 std::string g(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.10g}", value); }

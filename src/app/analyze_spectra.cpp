@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -18,6 +19,7 @@
 #include "app/analyze_command.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
+#include "io/io_error.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/snapshot_file.hpp"
 #include "spectra/dominant_mode.hpp"
@@ -97,27 +99,17 @@ constexpr FieldChoice kFields[] = {{"R", &PowerMaps::density, &AnnulusSpectrum::
                                    {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y},
                                    {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum}};
 
+// The spectra file as it grows: `<out>.partial`, flushed after its layout and after every frame,
+// given its final name only once its close succeeded (h5::PartialFile); a failure leaves the
+// `.partial` with the frames done so far.  Every HDF5 call is checked and throws IoError.
 class SpectraFile {
  public:
   SpectraFile(const std::string& path, const SpectraOptions& options, const SnapshotMetadata& metadata,
               const TransformOptions& transform, double dk, const AnnulusSpectrum& bins)
-      : partial_(path + ".partial") {
-    using namespace h5;
-    file_ = create_partial_file(path, kFormat, kFormatVersion, kVersion);
-    try {
-      write_layout(options, metadata, transform, dk, bins);
-    } catch (...) {  // no destructor runs for a half-constructed object: clean up here
-      H5Fclose(file_);
-      std::filesystem::remove(partial_);
-      throw;
-    }
+      : partial_(path, kFormat, kFormatVersion, kVersion), file_(partial_.get()) {
+    write_layout(options, metadata, transform, dk, bins);
+    partial_.flush();
   }
-  ~SpectraFile() {
-    if (file_ >= 0) H5Fclose(file_);
-    if (!finished_) std::filesystem::remove(partial_);
-  }
-  SpectraFile(const SpectraFile&) = delete;
-  SpectraFile& operator=(const SpectraFile&) = delete;
 
   // Root attributes (parameters of the analysis and of the run) and the empty per-frame datasets.
   void write_layout(const SpectraOptions& options, const SnapshotMetadata& metadata, const TransformOptions& transform,
@@ -151,20 +143,20 @@ class SpectraFile {
     const auto rings = static_cast<hsize_t>(bins.k.size());
     write_dataset(file_, "annulus_k", {rings}, bins.k);
     for (const char* name : {"frame_index", "collisions_per_particle", "time", "shear_offset", "tilt"}) {
-      H5Dclose(create_frames(file_, name, std::string(name) == "frame_index" ? H5T_STD_I64LE : H5T_IEEE_F64LE, {}));
+      add_frames(file_, name, std::string(name) == "frame_index" ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
     }
-    H5Dclose(create_frames(file_, "kx", H5T_IEEE_F64LE, {side, side}));
-    H5Dclose(create_frames(file_, "ky", H5T_IEEE_F64LE, {side, side}));
-    H5Dclose(create_frames(file_, "annulus_modes", H5T_STD_I64LE, {rings}));
-    H5Gclose(create_group(file_, "dominant"));
+    add_frames(file_, "kx", H5T_IEEE_F64LE, {side, side});
+    add_frames(file_, "ky", H5T_IEEE_F64LE, {side, side});
+    add_frames(file_, "annulus_modes", H5T_STD_I64LE, {rings});
+    Handle(create_group(file_, "dominant"), H5Gclose).close();
     for (const FieldChoice& field : kFields) {
-      H5Dclose(create_frames(file_, field.name, H5T_IEEE_F64LE, {side, side}));
-      H5Dclose(create_frames(file_, (std::string("annulus_") + field.name).c_str(), H5T_IEEE_F64LE, {rings}));
+      add_frames(file_, field.name, H5T_IEEE_F64LE, {side, side});
+      add_frames(file_, (std::string("annulus_") + field.name).c_str(), H5T_IEEE_F64LE, {rings});
       const std::string group = std::string("dominant/") + field.name;
-      H5Gclose(create_group(file_, group.c_str()));
-      for (const char* column : {"l", "m"}) H5Dclose(create_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {}));
+      Handle(create_group(file_, group.c_str()), H5Gclose).close();
+      for (const char* column : {"l", "m"}) add_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {});
       for (const char* column : {"kx", "ky", "k", "angle_deg", "length", "power", "length_over_L0"}) {
-        H5Dclose(create_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {}));
+        add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
       }
     }
   }
@@ -172,7 +164,7 @@ class SpectraFile {
   void append(std::int64_t index, const SnapshotFrame& frame, const PowerMaps& maps, const AnnulusSpectrum& annulus,
               const std::vector<DominantMode>& dominant, double l0) {
     using namespace h5;
-    const hsize_t k = frames_++;
+    const auto k = static_cast<hsize_t>(partial_.frames());
     append_frame(file_, "frame_index", H5T_NATIVE_INT64, &index, k);
     append_frame(file_, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
     append_frame(file_, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
@@ -195,18 +187,13 @@ class SpectraFile {
         append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
       }
     }
+    partial_.end_frame();
   }
-  void finish(const std::string& path) {
-    h5::publish_partial_file(file_, path);
-    file_ = -1;
-    finished_ = true;
-  }
+  void publish() { partial_.publish(); }
 
  private:
-  std::string partial_;
-  hid_t file_ = -1;
-  hsize_t frames_ = 0;
-  bool finished_ = false;
+  h5::PartialFile partial_;
+  hid_t file_;  // partial_'s identifier, owned by it
 };
 
 int bad_input(const std::string& message) {
@@ -273,7 +260,11 @@ int analyze_spectra(const SpectraOptions& options) {
                  dominant[0].length / l0);
     }
     write_file_atomically(csv_path, csv);
-    file->finish(options.out);
+    file->publish();
+  } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
+    throw;
+  } catch (const std::bad_alloc&) {  // exit 5, by main
+    throw;
   } catch (const std::exception& failure) {
     fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
     return 1;

@@ -189,4 +189,43 @@ else:
         check(not any(locked.iterdir()), "unwritable directory: something was written")
     finally:
         undo()
+
+
+# 7. The analyses of a run fill the disk while writing their HDF5 file: `granule analyze spectra`
+# (flushed frame by frame as spectra.h5.partial) and `granule analyze f1` (written after its CSV
+# tables).  The clean outputs go beside the clean run's, as references; a failed analysis exits 4
+# with one line naming its file, and publishes no spectra.h5 or f1.h5 unless it equals the clean one.
+ANALYSES = {"spectra.h5": ["analyze", "spectra", str(clean / "snapshots.h5"), "--max-mode", "8"],
+            "f1.h5": ["analyze", "f1", str(clean / "snapshots.h5"), "--cells", "3,3", "--density-window", "0+-1e9",
+                      "--temperature-window", "0+-1e9", "--min-samples", "10", "--bootstrap", "2",
+                      "--speed-bins", "16", "--angle-bins", "16"]}
+
+
+def analyze(name, out, fault=None):
+    """The analysis writing `name` into the directory `out`, under the fault library with `fault`."""
+    out.mkdir(parents=True, exist_ok=True)
+    env = dict(os.environ, LD_PRELOAD=LIBRARY, ASAN_OPTIONS="verify_asan_link_order=0")
+    env.update({f"GRANULE_FAULT_{key}": str(value) for key, value in (fault or {}).items()})
+    return subprocess.run([GRANULE, *ANALYSES[name], "--out", str(out / name)], capture_output=True, text=True,
+                          env=env, timeout=60)
+
+
+for name in ANALYSES:
+    report = WORK / f"analysis_bytes_{name}"
+    result = analyze(name, clean, {"PATH": name, "REPORT": report})
+    check(result.returncode == 0 and (clean / name).is_file(), f"clean {name}: exit {result.returncode}: {result.stderr}")
+    size = int(report.read_text())
+    # In the middle, just before the end (the close fails), and after the last byte (the rename fails).
+    for budget in (size // 2, size - 1, size):
+        label = f"{name} full after {budget} of {size} bytes"
+        out = WORK / f"analysis_{name}_{budget}"
+        result = analyze(name, out, {"PATH": name, "BUDGET": budget, "ERRNO": "ENOSPC"})
+        lines = result.stderr.strip().splitlines()
+        check(result.returncode == EXIT_IO_FAILURE and len(lines) == 1 and lines[0].startswith("granule: I/O error: ")
+              and name in lines[0], f"{label}: exit {result.returncode}, stderr {result.stderr.strip()[-400:]!r}")
+        for path in out.iterdir():
+            check(path.suffix == ".partial" or path.read_bytes() == (clean / path.name).read_bytes(),
+                  f"{label}: {path.name} under its final name differs from the clean analysis's")
+        check(not (out / name).exists(), f"{label}: {name} published")
+print(f"{3 * len(ANALYSES)} analyses with a disk that fills up")
 finish()
