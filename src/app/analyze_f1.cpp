@@ -8,10 +8,12 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include "app/analyze_command.hpp"
 #include "distribution/window_sampling.hpp"
+#include "io/io_error.hpp"
 
 namespace granule::app {
 
@@ -146,6 +148,10 @@ int analyze_f1(const F1CommandOptions& o) {
       return kExitNoWindow;
     }
     for (const std::string& path : write_f1_outputs(o.out, run, results)) fmt::print("wrote {}\n", path);
+  } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
+    throw;
+  } catch (const std::bad_alloc&) {  // exit 5, by main
+    throw;
   } catch (const std::exception& failure) {
     fmt::print(stderr, "granule analyze f1: error: {}\n", failure.what());
     return 1;
