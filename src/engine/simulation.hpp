@@ -93,6 +93,10 @@ class Simulation {
 
  private:
   void allocate_arrays();
+  // The arrays and clocks a checkpoint holds by name (simulation_checkpoint.cpp); the event kinds,
+  // cell lists, heap and collapse detector are saved by their own code.
+  template <typename Self, typename Visit>
+  static void visit_saved_state(Self& self, Visit&& visit);
   void load(const ParticleState& state);
   void rebuild();
   std::int64_t collapse_window() const { return std::max<std::int64_t>(1000, params_.particles); }

@@ -2,6 +2,8 @@
 // pending events, cell-list and heap order (they break ties), clocks, TC history, the collapse
 // detector — so that a run restored from one continues bit for bit (tests/validation).
 #include <stdexcept>
+#include <string_view>
+#include <type_traits>
 
 #include "engine/simulation.hpp"
 
@@ -40,6 +42,26 @@ std::vector<T> array_of_size(const StateArchive& archive, const std::string& nam
 
 }  // namespace
 
+template <typename Self, typename Visit>
+void Simulation::visit_saved_state(Self& self, Visit&& visit) {
+  visit("x", self.x_);
+  visit("y", self.y_);
+  visit("vx", self.vx_);
+  visit("vy", self.vy_);
+  visit("local_time", self.t_);
+  visit("collision_count", self.count_);
+  visit("cell", self.cell_);
+  visit("last_collision", self.last_collision_);
+  visit("event_partner", self.partner_);
+  visit("event_partner_count", self.partner_count_);
+  visit("t_now", self.t_now_);
+  visit("clock_base", self.clock_base_);
+  visit("t_ref", self.t_ref_);
+  visit("collisions", self.collisions_);
+  visit("events", self.events_);
+  visit("events_since_rebase", self.events_since_rebase_);
+}
+
 void Simulation::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "particles", static_cast<double>(params_.particles));
   archive.put_scalar(prefix + "diameter", params_.diameter);
@@ -54,29 +76,21 @@ void Simulation::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "grid_height", grid_.height);
   archive.put_scalar(prefix + "grid_strain_period", grid_.strain_period);
 
-  archive.put(prefix + "x", x_);
-  archive.put(prefix + "y", y_);
-  archive.put(prefix + "vx", vx_);
-  archive.put(prefix + "vy", vy_);
-  archive.put(prefix + "local_time", t_);
-  archive.put(prefix + "collision_count", count_);
-  archive.put(prefix + "cell", cell_);
-  archive.put(prefix + "last_collision", last_collision_);
+  visit_saved_state(*this, [&](const char* name, const auto& value) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) {
+      archive.put_scalar(prefix + name, value);
+    } else if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::int64_t>) {
+      archive.put_integer(prefix + name, value);
+    } else {
+      archive.put(prefix + name, value);
+    }
+  });
   std::vector<std::uint8_t> kinds(kind_.size());
   for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<std::uint8_t>(kind_[i]);
   archive.put(prefix + "event_kind", std::move(kinds));
-  archive.put(prefix + "event_partner", partner_);
-  archive.put(prefix + "event_partner_count", partner_count_);
   lists_.save(archive, prefix + "cell_list_");
   heap_.save(archive, prefix + "heap_");
   collapse_detector_.save(archive, prefix + "collapse_");
-
-  archive.put_scalar(prefix + "t_now", t_now_);
-  archive.put_scalar(prefix + "clock_base", clock_base_);
-  archive.put_scalar(prefix + "t_ref", t_ref_);
-  archive.put_integer(prefix + "collisions", collisions_);
-  archive.put_integer(prefix + "events", events_);
-  archive.put_integer(prefix + "events_since_rebase", events_since_rebase_);
 }
 
 Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
@@ -88,22 +102,24 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
   check_matches(archive, prefix, params, grid);
   params_.restitution = archive.scalar(prefix + "restitution");
   const auto n = static_cast<std::size_t>(params.particles);
-  x_ = array_of_size<double>(archive, prefix + "x", n);
-  y_ = array_of_size<double>(archive, prefix + "y", n);
-  vx_ = array_of_size<double>(archive, prefix + "vx", n);
-  vy_ = array_of_size<double>(archive, prefix + "vy", n);
-  t_ = array_of_size<double>(archive, prefix + "local_time", n);
-  count_ = array_of_size<std::uint32_t>(archive, prefix + "collision_count", n);
-  cell_ = array_of_size<std::int32_t>(archive, prefix + "cell", n);
-  last_collision_ = array_of_size<double>(archive, prefix + "last_collision", params.tc_duration > 0.0 ? n : 0);
+  visit_saved_state(*this, [&](const char* name, auto& value) {
+    using Value = std::decay_t<decltype(value)>;
+    if constexpr (std::is_same_v<Value, double>) {
+      value = archive.scalar(prefix + name);
+    } else if constexpr (std::is_same_v<Value, std::int64_t>) {
+      value = archive.integer(prefix + name);
+    } else {
+      // Per-disk arrays; the TC history exists only with the TC model.
+      const bool tc_only = std::string_view(name) == "last_collision";
+      value = array_of_size<typename Value::value_type>(archive, prefix + name, tc_only && params.tc_duration <= 0.0 ? 0 : n);
+    }
+  });
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
   kind_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (kinds[i] > static_cast<std::uint8_t>(EventKind::kCrossUp)) throw std::runtime_error("checkpoint has an unknown event kind");
     kind_[i] = static_cast<EventKind>(kinds[i]);
   }
-  partner_ = array_of_size<std::int32_t>(archive, prefix + "event_partner", n);
-  partner_count_ = array_of_size<std::uint32_t>(archive, prefix + "event_partner_count", n);
   for (std::size_t i = 0; i < n; ++i) {
     const bool collision = kind_[i] == EventKind::kCollision;
     if (cell_[i] < 0 || cell_[i] >= grid.cell_count() || partner_[i] < -1 || partner_[i] >= params.particles ||
@@ -114,12 +130,6 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
   lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), params.particles);
   heap_.restore(archive, prefix + "heap_", static_cast<std::int32_t>(params.particles));
   collapse_detector_.restore(archive, prefix + "collapse_");
-  t_now_ = archive.scalar(prefix + "t_now");
-  clock_base_ = archive.scalar(prefix + "clock_base");
-  t_ref_ = archive.scalar(prefix + "t_ref");
-  collisions_ = archive.integer(prefix + "collisions");
-  events_ = archive.integer(prefix + "events");
-  events_since_rebase_ = archive.integer(prefix + "events_since_rebase");
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.
   try {
     check_invariants();
