@@ -14,13 +14,19 @@ namespace granule {
 std::string timeseries_header() {
   std::string header;
   const DiagnosticsSample layout;
-  for_each_column(layout, [&](const char* name, const double&) { header += (header.empty() ? "" : ",") + std::string(name); });
+  for_each_column(layout, [&](const char* name, const double&) {
+    if (!header.empty()) header += ',';
+    header += name;
+  });
   return header + "\n";
 }
 
 std::string timeseries_row(const DiagnosticsSample& s) {
   std::string row;
-  for_each_column(s, [&](const char*, const double& value) { row += fmt::format("{}{:.12g}", row.empty() ? "" : ",", value); });
+  for_each_column(s, [&](const char*, const double& value) {
+    if (!row.empty()) row += ',';
+    row += fmt::format("{:.12g}", value);
+  });
   return row + "\n";
 }
 
