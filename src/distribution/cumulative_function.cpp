@@ -23,11 +23,15 @@ CumulativeFunction cumulative_function(const Eigen::MatrixXd& counts, double tot
   CumulativeFunction c;
   c.grid = grid;
   c.total = total;
-  // (5.11) by counting: a two-dimensional running sum, normalised by all samples (5.12).
-  c.h = Eigen::MatrixXd::Zero(nv + 1, nt + 1);
+  c.counts = counts;
+  // (5.11) by counting: a two-dimensional running sum of the counts, exact in double precision
+  // (whole numbers below 2⁵³), then normalised by all samples (5.12).  Dividing exact sums keeps h
+  // monotone to the last bit; running sums of the fractions would not (round-off of 1e-17).
+  Eigen::MatrixXd below = Eigen::MatrixXd::Zero(nv + 1, nt + 1);
   for (int k = 1; k <= nv; ++k)
     for (int l = 1; l <= nt; ++l)
-      c.h(k, l) = c.h(k - 1, l) + c.h(k, l - 1) - c.h(k - 1, l - 1) + counts(k - 1, l - 1) / total;
+      below(k, l) = below(k - 1, l) + below(k, l - 1) - below(k - 1, l - 1) + counts(k - 1, l - 1);
+  c.h = below / total;
   c.phi = c.h.col(nt) / (2.0 * M_PI);
   // (5.19): ψ = h − (1/2π)∫h dθ + (π − θ)φ, i.e. the zero-mean part of the periodic function
   // h − θφ.  Its θ-average over the uniform edges θ_0 … θ_{n−1} is exact for a trigonometric

@@ -24,12 +24,15 @@ Eigen::MatrixXd polar_counts(const double* speed, const double* angle, std::size
 struct CumulativeFunction {
   PolarGrid grid;
   double total = 0.0;    // number of samples N_{ρ,T}
+  Eigen::MatrixXd counts;  // speed_bins × angle_bins, as given
   Eigen::MatrixXd h;     // (speed_bins+1) × (angle_bins+1): h(u_k, θ_l), (5.11)
   Eigen::VectorXd phi;   // (speed_bins+1): φ(u_k) = h(u_k, 2π)/2π, (5.18)
   Eigen::MatrixXd psi;   // (speed_bins+1) × angle_bins: ψ(θ_l, u_k), l < angle_bins, (5.19)
 };
 
-// h by counting (the fraction of samples with speed < u_k and angle < θ_l), then φ and ψ.
+// h by counting (the fraction of samples with speed < u_k and angle < θ_l), then φ and ψ.  Counts
+// are whole numbers (samples times bootstrap multiplicities), so h is exactly non-decreasing in u
+// and θ, and h(u_max, 2π) = 1 exactly when every sample lies below u_max.
 CumulativeFunction cumulative_function(const Eigen::MatrixXd& counts, double total, const PolarGrid& grid);
 
 }  // namespace granule::distribution

@@ -53,8 +53,11 @@ PlaneIntegrals rescaled(PlaneIntegrals p, double scale) {
   return p;
 }
 
+// The estimate from the snapshots counted `multiplicity` times each (all 1: the data; a bootstrap
+// replicate otherwise).
 F1Estimate estimate(const SnapshotBins& bins, const std::vector<double>& multiplicity, const PolarGrid& grid,
-                    double fit_speed_max, double scale, const F1Options& options) {
+                    double fit_speed_max, double scale, const F1Options& options,
+                    const std::optional<HarmonicSet>& resolved) {
   Eigen::MatrixXd counts = Eigen::MatrixXd::Zero(grid.speed_bins, grid.angle_bins);
   double total = 0.0;
   SecondMoment sum;
@@ -66,23 +69,8 @@ F1Estimate estimate(const SnapshotBins& bins, const std::vector<double>& multipl
     sum.xy += multiplicity[k] * bins.sums[k].xy;
     sum.yy += multiplicity[k] * bins.sums[k].yy;
   }
-  F1Estimate e;
-  e.cumulative = cumulative_function(counts, total, grid);
-  e.once = fit_once(e.cumulative, fit_speed_max);
-  e.angular = fit_quadratic_exponent(e.once, grid.angle_bins, options.fit_speeds, fit_speed_max);
-  const SineSeries dimensionless = fit_sine_series(e.angular);
-  e.series = rescale_speed(dimensionless, scale);
+  F1Estimate e = fit_counts(counts, total, grid, fit_speed_max, scale, options, resolved);
   e.direct = {sum.xx / total, sum.xy / total, sum.yy / total};
-  e.once_integrals = rescaled(
-      plane_integrals([&](double u, double theta) { return e.once.density(u, theta); }, grid.speed_max), scale);
-  e.twice_integrals = rescaled(plane_integrals(
-                                   [&](double u, double theta) {
-                                     return std::exp(-(dimensionless.value(0, theta) +
-                                                       u * (dimensionless.value(1, theta) + u * dimensionless.value(2, theta))));
-                                   },
-                                   2.0 * grid.speed_max),
-                               scale);
-  e.ratio = e.series.mean[1] * e.series.mean[1] / e.series.mean[2];
   return e;
 }
 
@@ -100,8 +88,18 @@ FitQuality quality_of(const F1Estimate& e) {
   return q;
 }
 
-bool all_converged(const F1Estimate& e) {
-  return e.once.speed.report.converged && e.once.angular.report.converged && e.series.report.converged;
+// Why the fits of an estimate failed (empty if all three converged): a failed fit gives no result.
+std::string fit_failures(const F1Estimate& e) {
+  std::string failures;
+  for (const auto& [name, report] : {std::pair{"phi*", &e.once.speed.report}, std::pair{"psi*", &e.once.angular.report},
+                                     std::pair{"sine series", &e.series.report}})
+    if (!report->converged) failures += (failures.empty() ? "" : ", ") + std::string(name) + ": " + report->status;
+  return failures;
+}
+
+std::string window_label(const WindowSamples& w) {
+  return "window rho " + std::to_string(w.density.center) + " +- " + std::to_string(w.density.half_width) + ", T " +
+         std::to_string(w.temperature.center) + " +- " + std::to_string(w.temperature.half_width);
 }
 
 // Accumulates mean and variance of a vector of numbers over replicates; a replicate whose
@@ -136,6 +134,27 @@ Eigen::VectorXd error_quantities(const F1Estimate& e) {
 
 }  // namespace
 
+F1Estimate fit_counts(const Eigen::MatrixXd& counts, double total, const PolarGrid& grid, double fit_speed_max,
+                      double scale, const F1Options& options, const std::optional<HarmonicSet>& resolved) {
+  F1Estimate e;
+  e.cumulative = cumulative_function(counts, total, grid);
+  e.once = fit_once(e.cumulative, fit_speed_max, resolved ? *resolved : resolved_harmonics(e.cumulative));
+  e.angular = fit_quadratic_exponent(e.once, grid.angle_bins, options.fit_speeds, fit_speed_max);
+  const SineSeries dimensionless = fit_sine_series(e.angular);
+  e.series = rescale_speed(dimensionless, scale);
+  e.once_integrals = rescaled(
+      plane_integrals([&](double u, double theta) { return e.once.density(u, theta); }, grid.speed_max), scale);
+  e.twice_integrals = rescaled(plane_integrals(
+                                   [&](double u, double theta) {
+                                     return std::exp(-(dimensionless.value(0, theta) +
+                                                       u * (dimensionless.value(1, theta) + u * dimensionless.value(2, theta))));
+                                   },
+                                   2.0 * grid.speed_max),
+                               scale);
+  e.ratio = e.series.mean[1] * e.series.mean[1] / e.series.mean[2];
+  return e;
+}
+
 WindowResult analyse_window(const WindowSamples& w, const F1Options& options) {
   WindowResult r;
   r.density_window = w.density;
@@ -148,9 +167,7 @@ WindowResult analyse_window(const WindowSamples& w, const F1Options& options) {
     weighted += w.temperature_weighted[k];
   }
   if (r.samples < options.min_samples || r.snapshots < 2) {
-    r.warning = "window rho " + std::to_string(w.density.center) + " +- " + std::to_string(w.density.half_width) +
-                ", T " + std::to_string(w.temperature.center) + " +- " + std::to_string(w.temperature.half_width) +
-                ": only " + std::to_string(r.samples) + " samples in " + std::to_string(r.snapshots) +
+    r.warning = window_label(w) + ": only " + std::to_string(r.samples) + " samples in " + std::to_string(r.snapshots) +
                 " snapshots (at least " + std::to_string(options.min_samples) + " and 2 snapshots needed); skipped";
     return r;
   }
@@ -173,21 +190,29 @@ WindowResult analyse_window(const WindowSamples& w, const F1Options& options) {
   const PolarGrid grid{options.speed_bins, options.angle_bins, r.speed_max / r.speed_scale};
   const SnapshotBins bins = bin_snapshots(w, grid, r.speed_scale);
   const double fit_u = r.fit_speed_max / r.speed_scale;
-  r.estimate = estimate(bins, std::vector<double>(r.snapshots, 1.0), grid, fit_u, r.speed_scale, options);
+  r.estimate = estimate(bins, std::vector<double>(r.snapshots, 1.0), grid, fit_u, r.speed_scale, options, std::nullopt);
+  if (const std::string failures = fit_failures(r.estimate); !failures.empty()) {
+    r.warning = window_label(w) + ": the fits failed (" + failures + "); skipped";
+    return r;
+  }
   r.quality = quality_of(r.estimate);
   r.jenkins_richman = jenkins_richman(r.estimate.direct);
 
-  // Bootstrap over snapshots: the snapshots are the ensemble of (5.7).
+  // Bootstrap over snapshots: the snapshots are the ensemble of (5.7).  Every replicate fits the
+  // harmonics of (5.21) with the shapes the whole sample chose, so the errors are those of that one
+  // model: re-choosing per replicate would switch a marginal harmonic's Q_p on and off (duplicated
+  // snapshots blur a replicate's harmonics) and spread the replicates over two models.
   std::mt19937_64 random(options.seed);
   std::uniform_int_distribution<std::size_t> pick(0, r.snapshots - 1);
   Spread spread;
   for (int b = 0; b < options.bootstrap; ++b) {
     std::vector<double> multiplicity(r.snapshots, 0.0);
     for (std::size_t k = 0; k < r.snapshots; ++k) multiplicity[pick(random)] += 1.0;
-    F1Estimate replicate = estimate(bins, multiplicity, grid, fit_u, r.speed_scale, options);
+    F1Estimate replicate = estimate(bins, multiplicity, grid, fit_u, r.speed_scale, options, r.estimate.once.angular.resolved);
     for (int j = 1; j <= SineSeries::kHarmonics; ++j) align_phase(replicate.series, j, r.estimate.series.phase[j - 1]);
+    if (!fit_failures(replicate).empty()) continue;  // a failed fit is no sample of the spread
     spread.add(error_quantities(replicate));
-    r.errors.converged_replicates += all_converged(replicate) ? 1 : 0;
+    ++r.errors.converged_replicates;
   }
   r.errors.replicates = options.bootstrap;
   if (options.bootstrap > 0) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "distribution/cumulative_function.hpp"
@@ -62,12 +63,12 @@ struct F1Errors {
   SineSeries series;  // mean, amplitude, phase hold standard deviations
   double direct_trace = 0.0, once_trace = 0.0, twice_trace = 0.0, ratio = 0.0;
   int replicates = 0;
-  int converged_replicates = 0;  // replicates whose three fits all converged
+  int converged_replicates = 0;  // replicates whose three fits all converged: the only ones used
 };
 
 struct WindowResult {
   bool analysed = false;
-  std::string warning;             // why the window was skipped (empty when analysed)
+  std::string warning;             // why the window was skipped: too few samples or failed fits
   ValueWindow density_window, temperature_window;
   std::size_t samples = 0, snapshots = 0;
   double density = 0.0;            // ρ = N_{ρ,T}/Ω_{ρ,T} (§5.2, before (5.8))
@@ -86,6 +87,17 @@ struct WindowResult {
   double twice_density(double v, double theta) const;
 };
 
+// Steps 3–8 of the procedure on given polar counts (speeds in units of `scale`, results in the
+// snapshots' units): h, the once fit with the harmonics `resolved` (chosen from the counts when not
+// given), the twice fit up to `fit_speed_max`, the sine series, the plane integrals.  `direct`
+// needs the samples themselves and is left empty.  Counts need not be whole numbers: on exact bin
+// probabilities times N this is the procedure's infinite-sample limit.
+F1Estimate fit_counts(const Eigen::MatrixXd& counts, double total, const PolarGrid& grid, double fit_speed_max,
+                      double scale, const F1Options& options, const std::optional<HarmonicSet>& resolved);
+
+// Skips the window (analysed = false, a warning saying why) when it has too few samples or when a
+// fit of the estimate fails: no number of a failed fit is reported.  The bootstrap errors come from
+// the replicates whose fits all converged (errors.converged_replicates of errors.replicates).
 WindowResult analyse_window(const WindowSamples& samples, const F1Options& options);
 
 }  // namespace granule::distribution

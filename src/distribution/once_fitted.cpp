@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "distribution/harmonic_significance.hpp"
 
 namespace granule::distribution {
 
@@ -27,12 +30,16 @@ double AngularFit::psi(double theta, double u) const {
   return sum;
 }
 
+double OnceFitted::isotropic_density(double u) const { return speed.j_prime_over_u(u) * std::exp(-speed.j(u)) / (2.0 * M_PI); }
+
+double OnceFitted::harmonic_density(int p, double u) const {
+  return 2.0 * p * angular.alpha[p - 1] * angular.q_prime_over_u(p, u) * std::exp(-angular.q(p, u));
+}
+
 double OnceFitted::density(double u, double theta) const {
-  // φ*_u / u = J'/u e^{−J} / 2π;  ψ*_θu / u = Σ 2p α_p (Q_p'/u) e^{−Q_p} cos 2p(θ + β).
-  double value = speed.j_prime_over_u(u) * std::exp(-speed.j(u)) / (2.0 * M_PI);
-  for (int p = 1; p <= AngularFit::kHarmonics; ++p)
-    value += 2.0 * p * angular.alpha[p - 1] * angular.q_prime_over_u(p, u) * std::exp(-angular.q(p, u)) *
-             std::cos(2.0 * p * (theta + angular.beta));
+  // φ*_u / u plus ψ*_θu / u = Σ 2p α_p (Q_p'/u) e^{−Q_p} cos 2p(θ + β).
+  double value = isotropic_density(u);
+  for (int p = 1; p <= AngularFit::kHarmonics; ++p) value += harmonic_density(p, u) * std::cos(2.0 * p * (theta + angular.beta));
   return value;
 }
 
@@ -70,45 +77,43 @@ SpeedFit fit_speed(const CumulativeFunction& c) {
   return fit;
 }
 
-// The harmonics p of (5.21) that take part in the ψ fit; the others have α_p = 0.
-using HarmonicSet = std::array<bool, AngularFit::kHarmonics>;
-
-int parameter_count(const HarmonicSet& active) {
+// x = (β, then per harmonic α_p and, for a resolved one, d_p2 … d_p6).  An unresolved harmonic
+// has the speed dependence of φ*: Q_p = J, i.e. d_p = (a_2, a_3, a_4, 0, 0), a case of (5.24).
+int parameter_count(const AngularFit& shape) {
   int count = 1;
-  for (const bool a : active) count += a ? 1 + AngularFit::kPowers : 0;
+  for (const bool resolved : shape.resolved) count += resolved ? 1 + AngularFit::kPowers : 1;
   return count;
 }
 
-// x = (β, then per active harmonic α_p, d_p2 … d_p6).
-void unpack(const Eigen::VectorXd& x, const HarmonicSet& active, AngularFit& fit) {
+void unpack(const Eigen::VectorXd& x, const SpeedFit& speed, AngularFit& fit) {
   fit.beta = x[0];
   int next = 1;
   for (int p = 0; p < AngularFit::kHarmonics; ++p) {
-    fit.alpha[p] = 0.0;
-    fit.d[p].fill(0.0);
-    if (!active[p]) continue;
     fit.alpha[p] = x[next++];
-    for (int m = 0; m < AngularFit::kPowers; ++m) fit.d[p][m] = x[next++];
+    fit.d[p] = {speed.a[0], speed.a[1], speed.a[2], 0.0, 0.0};
+    if (fit.resolved[p])
+      for (int m = 0; m < AngularFit::kPowers; ++m) fit.d[p][m] = x[next++];
   }
 }
 
-Eigen::VectorXd pack(const AngularFit& fit, const HarmonicSet& active) {
-  Eigen::VectorXd x(parameter_count(active));
+Eigen::VectorXd pack(const AngularFit& fit) {
+  Eigen::VectorXd x(parameter_count(fit));
   x[0] = fit.beta;
   int next = 1;
   for (int p = 0; p < AngularFit::kHarmonics; ++p) {
-    if (!active[p]) continue;
     x[next++] = fit.alpha[p];
-    for (int m = 0; m < AngularFit::kPowers; ++m) x[next++] = fit.d[p][m];
+    if (fit.resolved[p])
+      for (int m = 0; m < AngularFit::kPowers; ++m) x[next++] = fit.d[p][m];
   }
   return x;
 }
 
 // Starting point: the phase β from the 2θ Fourier component of ψ summed over speeds, the
-// amplitudes A_p(u_k) by projection, then α_p, d_pm by a separate fit of each A_p(u).
-AngularFit initial_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma) {
+// amplitudes A_p(u_k) by projection, then α_p (and d_pm of a resolved harmonic) by a separate fit
+// of each A_p(u).  `fit.resolved` says which harmonics have their own Q_p.
+AngularFit initial_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma, const SpeedFit& speed,
+                           AngularFit fit) {
   const int nv = c.grid.speed_bins, nt = c.grid.angle_bins;
-  AngularFit fit;
   Eigen::MatrixXd sine(nv + 1, AngularFit::kHarmonics), cosine(nv + 1, AngularFit::kHarmonics);
   for (int k = 0; k <= nv; ++k)
     for (int p = 1; p <= AngularFit::kHarmonics; ++p) {
@@ -125,6 +130,17 @@ AngularFit initial_angular(const CumulativeFunction& c, const Eigen::VectorXd& s
     Eigen::VectorXd amplitude(nv + 1);
     for (int k = 0; k <= nv; ++k)
       amplitude[k] = sine(k, p - 1) * std::cos(2.0 * p * fit.beta) + cosine(k, p - 1) * std::sin(2.0 * p * fit.beta);
+    fit.d[p - 1] = {speed.a[0], speed.a[1], speed.a[2], 0.0, 0.0};
+    if (!fit.resolved[p - 1]) {  // A_p = α_p · 2πφ*: linear least squares for α_p
+      double shape_shape = 0.0, shape_data = 0.0;
+      for (int k = 1; k <= nv; ++k) {
+        const double shape = 2.0 * M_PI * speed.phi(c.grid.speed_edge(k)) / sigma[k];
+        shape_shape += shape * shape;
+        shape_data += shape * amplitude[k] / sigma[k];
+      }
+      fit.alpha[p - 1] = shape_shape > 0.0 ? shape_data / shape_shape : 0.0;
+      continue;
+    }
     Eigen::VectorXd x(1 + AngularFit::kPowers);
     x.setZero();
     x[0] = amplitude.tail(std::max(1, nv / 4)).mean();
@@ -148,14 +164,14 @@ AngularFit initial_angular(const CumulativeFunction& c, const Eigen::VectorXd& s
   return fit;
 }
 
-AngularFit fit_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma, const AngularFit& start,
-                       const HarmonicSet& active) {
+AngularFit fit_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma, const SpeedFit& speed,
+                       const AngularFit& start) {
   const int nv = c.grid.speed_bins, nt = c.grid.angle_bins;
-  AngularFit fit;
-  Eigen::VectorXd x = pack(start, active);
+  AngularFit fit = start;
+  Eigen::VectorXd x = pack(start);
   const auto residual = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r) {
-    AngularFit trial;
-    unpack(y, active, trial);
+    AngularFit trial = start;
+    unpack(y, speed, trial);
     Eigen::MatrixXd amplitude(nv, AngularFit::kHarmonics), sine(AngularFit::kHarmonics, nt);
     for (int p = 1; p <= AngularFit::kHarmonics; ++p) {
       for (int k = 1; k <= nv; ++k) amplitude(k - 1, p - 1) = trial.amplitude(p, c.grid.speed_edge(k));
@@ -165,56 +181,82 @@ AngularFit fit_angular(const CumulativeFunction& c, const Eigen::VectorXd& sigma
     for (int k = 1; k <= nv; ++k)
       for (int l = 0; l < nt; ++l) r[(k - 1) * nt + l] = (model(k - 1, l) - c.psi(k, l)) / sigma[k];
   };
-  const Eigen::Index residuals = static_cast<Eigen::Index>(nv) * nt;
-  if (x.size() > 1) {
-    fit.report = levenberg_marquardt(residual, residuals, x);
-  } else {  // no harmonic left: ψ* = 0, nothing to minimise
-    Eigen::VectorXd r(residuals);
-    residual(x, r);
-    fit.report = {true, "no harmonic resolved", 1, r.norm(), r.norm() / std::sqrt(static_cast<double>(residuals))};
-  }
-  unpack(x, active, fit);
+  fit.report = levenberg_marquardt(residual, static_cast<Eigen::Index>(nv) * nt, x);
+  unpack(x, speed, fit);
   return fit;
 }
 
-// A_p = α_p(1 − e^{−Q_p}) rises from 0 to its asymptote α_p (5.23).  Fitted noise can make it dip
-// a little past 0 (Q_p slightly negative: down to −0.2 for the weakest harmonic of an anisotropic
-// Gaussian, resolved at ~6σ); a dip by more than half the asymptote, Q_p < −log(3/2), means that
-// Q_p is not determined by the data.
+// Signs that a harmonic's own Q_p is not determined by the data.  (1) A_p = α_p(1 − e^{−Q_p})
+// rises from 0 to its asymptote α_p (5.23); fitted noise can make it dip a little past 0 (Q_p
+// down to −0.2 for the weakest harmonic of an anisotropic Gaussian, resolved at ~6σ), a dip by more
+// than half the asymptote, Q_p < −log(3/2), cannot be read from the data.  (2) A harmonic of a
+// density f ≥ 0 is at most twice its angle average, |∫f cos 2pθ dθ| ≤ ∫f dθ: fitted ones reach
+// 1.1 times that bound in the tail of an anisotropic Gaussian, a Q_p that wanders to steep
+// coefficients makes a spike of 4 times it, so more than twice the bound is not a harmonic of data.
 constexpr double kLowestQ = -0.4054651081081644;  // −log(3/2)
+constexpr double kLargestHarmonic = 2.0 * 2.0;    // |harmonic| / angle average
 
-// The harmonics whose Q_p falls below kLowestQ at speeds up to `speed_limit`, on a grid finer
-// than the bins (Q_p can dip between two edges).
-HarmonicSet undetermined_harmonics(const AngularFit& fit, const HarmonicSet& active, int speed_bins, double speed_limit) {
+// Speeds up to `speed_limit` on a grid four times finer than the bins (Q_p can dip between two edges).
+template <typename Test>
+bool everywhere_on_fit_range(int speed_bins, double speed_limit, Test test) {
   const int speeds = 4 * speed_bins;
-  HarmonicSet undetermined{};
-  for (int p = 1; p <= AngularFit::kHarmonics; ++p)
-    for (int k = 1; k <= speeds && active[p - 1] && !undetermined[p - 1]; ++k)
-      undetermined[p - 1] = !(fit.q(p, speed_limit * k / speeds) >= kLowestQ);
-  return undetermined;
+  for (int k = 1; k <= speeds; ++k)
+    if (!test(speed_limit * k / speeds)) return false;
+  return true;
 }
 
 }  // namespace
 
-// A harmonic that the data do not resolve leaves its (α_p, Q_p) undetermined (only the product
-// A_p ≈ 0 is fitted), and Q_p can wander to huge coefficients whose derivative ψ*_θu spikes
-// between the bin edges or below the first one, so that f̃* is distorted or no density at all
-// (seen on isotropic Maxwellian samples: −log f̃* then gives coefficients off by 6–10⁴ σ, or NaN).
-// The thesis chooses the number of harmonics in (5.21) by the quality of the fit; here all four
-// are fitted, and while some are undetermined those are dropped and the rest refitted.  Fits
-// whose harmonics are all determined are unchanged.
-OnceFitted fit_once(const CumulativeFunction& c, double speed_limit) {
+HarmonicSet resolved_harmonics(const CumulativeFunction& c) {
+  const std::vector<double> chi_square = harmonic_chi_square(c, AngularFit::kHarmonics);
+  HarmonicSet resolved;
+  for (int p = 0; p < AngularFit::kHarmonics; ++p) resolved[p] = chi_square[static_cast<std::size_t>(p)] > kResolvedChiSquare;
+  return resolved;
+}
+
+// The thesis chooses the number of harmonics in (5.21) by the quality of the fit; its form has
+// four.  A harmonic that the samples do not resolve leaves (α_p, Q_p) undetermined if both are
+// fitted (only the product A_p ≈ 0 is): Q_p wanders to coefficients of 10³–10⁶ whose derivative
+// ψ*_θu spikes between the bin edges or below the first one, so that f̃* is distorted or no density
+// at all (seen on isotropic Maxwellian samples: −log f̃* then gives coefficients off by 5–10 σ,
+// which made single bootstrap replicates outliers, or NaN).  So a harmonic gets its own Q_p only
+// when the samples resolve it and the fit then determines Q_p (kLowestQ, kLargestHarmonic, and
+// the fit converges); otherwise Q_p = J, the speed dependence of φ*, and the data fix only its
+// amplitude α_p.  Keeping every harmonic, rather than dropping the unresolved ones, keeps their
+// statistical spread in the bootstrap errors of the harmonics of (5.29).  A φ* that does not rise
+// on the twice fit's speed range makes f̃* negative at every angle: that fit has failed and is
+// reported so.
+OnceFitted fit_once(const CumulativeFunction& c, double speed_limit, HarmonicSet resolved) {
   OnceFitted once;
   once.speed = fit_speed(c);
+  if (!everywhere_on_fit_range(c.grid.speed_bins, speed_limit, [&](double u) { return once.speed.j_prime_over_u(u) > 0.0; })) {
+    once.speed.report.converged = false;
+    once.speed.report.status = "phi* does not rise on the fit range (J' <= 0)";
+  }
   const Eigen::VectorXd sigma = psi_sigma(c);
-  const AngularFit start = initial_angular(c, sigma);
-  HarmonicSet active;
-  active.fill(true);
+  AngularFit shape;
+  shape.resolved = resolved;
   while (true) {
-    once.angular = fit_angular(c, sigma, start, active);
-    const HarmonicSet drop = undetermined_harmonics(once.angular, active, c.grid.speed_bins, speed_limit);
-    if (std::none_of(drop.begin(), drop.end(), [](bool d) { return d; })) break;
-    for (int p = 0; p < AngularFit::kHarmonics; ++p) active[p] = active[p] && !drop[p];
+    once.angular = fit_angular(c, sigma, once.speed, initial_angular(c, sigma, once.speed, shape));
+    bool changed = false;
+    for (int p = 1; p <= AngularFit::kHarmonics; ++p)
+      if (shape.resolved[p - 1] && !everywhere_on_fit_range(c.grid.speed_bins, speed_limit, [&](double u) {
+            return once.angular.q(p, u) >= kLowestQ &&
+                   std::abs(once.harmonic_density(p, u)) <= kLargestHarmonic * once.isotropic_density(u);
+          })) {
+        shape.resolved[p - 1] = false;
+        changed = true;
+      }
+    // A fit that crawls to its evaluation limit has a direction the data do not fix: the weakest
+    // harmonic's own Q_p (a marginal harmonic in a bootstrap replicate of few snapshots, say).
+    int weakest = -1;
+    for (int p = 0; p < AngularFit::kHarmonics && !changed && !once.angular.report.converged; ++p)
+      if (shape.resolved[p] && (weakest < 0 || std::abs(once.angular.alpha[p]) < std::abs(once.angular.alpha[weakest]))) weakest = p;
+    if (weakest >= 0) {
+      shape.resolved[weakest] = false;
+      changed = true;
+    }
+    if (!changed) break;
   }
   return once;
 }

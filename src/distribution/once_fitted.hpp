@@ -29,6 +29,9 @@ struct AngularFit {
   double beta = 0.0;
   std::array<double, kHarmonics> alpha{};
   std::array<std::array<double, kPowers>, kHarmonics> d{};  // d[p−1][m−2]
+  // Harmonic p was resolved by the samples and has its own Q_p; otherwise Q_p = J (5.22), the
+  // speed dependence of φ*, and only α_p was fitted.
+  std::array<bool, kHarmonics> resolved{};
   FitReport report;
 
   double q(int p, double u) const;              // Q_p(u)
@@ -43,14 +46,26 @@ struct OnceFitted {
 
   // f̃^(1)*(u, θ) = [φ*_u + ψ*_θu]/u (5.25, 5.26); finite at u → 0 since J, Q_p start at u².
   double density(double u, double theta) const;
+  // Its angle average φ*_u/u = (J'/u) e^{−J}/2π, and the amplitude of its harmonic
+  // cos 2p(θ + β), 2p α_p (Q_p'/u) e^{−Q_p}.
+  double isotropic_density(double u) const;
+  double harmonic_density(int p, double u) const;
   // h*(u, θ) = θ φ*(u) + ψ*(θ, u) − ψ*(0, u): the fitted counterpart of (5.11), using (5.15).
   double cumulative(double u, double theta) const;
 };
 
+// Which harmonics p = 1 … 4 of (5.21) get their own Q_p (element p − 1).
+using HarmonicSet = std::array<bool, AngularFit::kHarmonics>;
+
+// The harmonics the samples resolve (harmonic_significance.hpp).
+HarmonicSet resolved_harmonics(const CumulativeFunction& c);
+
 // Fits φ* to φ and ψ* to ψ by Levenberg–Marquardt, each residual weighted by the binomial
-// standard deviation of the counted fraction it comes from.  A harmonic of (5.21) whose A_p dips
-// below 0 by more than half its asymptote α_p at speeds up to `speed_limit` (the range the twice
-// fit uses) is not determined by the data: it is dropped (α_p = 0, Q_p = 0) and the rest refitted.
-OnceFitted fit_once(const CumulativeFunction& c, double speed_limit);
+// standard deviation of the counted fraction it comes from.  All four harmonics of (5.21) are
+// fitted; those in `resolved` with their own Q_p, unless the fit leaves Q_p below −log(3/2) or the
+// harmonic of f̃* above twice what a density allows at speeds up to `speed_limit` (the range the
+// twice fit uses), or does not converge (then the weakest loses it), the others with Q_p = J.  A φ* that does not rise up to `speed_limit` is
+// reported as not converged.
+OnceFitted fit_once(const CumulativeFunction& c, double speed_limit, HarmonicSet resolved);
 
 }  // namespace granule::distribution

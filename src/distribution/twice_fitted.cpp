@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 #include <Eigen/SVD>
 #include <cmath>
+#include <limits>
 
 namespace granule::distribution {
 
@@ -32,6 +33,11 @@ AngularCoefficients fit_quadratic_exponent(const OnceFitted& once, int angles, i
       target[used] = -weight * std::log(f);
       ++used;
     }
+    if (used < 3) {  // no quadratic through fewer points: no b at this angle, and no series (5.29)
+      out.b.row(l).setConstant(std::numeric_limits<double>::quiet_NaN());
+      out.rms[l] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     const Eigen::MatrixXd a = design.topRows(used);
     const Eigen::VectorXd y = target.head(used);
     const Eigen::Vector3d coefficients = a.colPivHouseholderQr().solve(y);
@@ -39,7 +45,7 @@ AngularCoefficients fit_quadratic_exponent(const OnceFitted& once, int angles, i
     // Unweighted residuals in log f̃ for the report.
     const Eigen::VectorXd weights = a.col(0);
     const Eigen::VectorXd r = ((a * coefficients - y).array() / weights.array()).matrix();
-    out.rms[l] = used > 0 ? r.norm() / std::sqrt(static_cast<double>(used)) : 0.0;
+    out.rms[l] = r.norm() / std::sqrt(static_cast<double>(used));
     for (int k = 0; k < used; ++k)
       out.max_relative_deviation = std::max(out.max_relative_deviation, std::abs(std::expm1(-r[k])));
   }

@@ -21,7 +21,8 @@ struct AngularCoefficients {
 
 // Weighted linear least squares (Eigen's QR) of −log f̃*(u, θ_l) on `speeds` uniform points in
 // (0, speed_max] at each of `angles` angles, each point weighted by √(u f̃*) (its counting
-// statistics).
+// statistics).  An angle with fewer than 3 points where f̃* > 0 has b = NaN (no fit), which makes
+// the sine series fail.
 AngularCoefficients fit_quadratic_exponent(const OnceFitted& once, int angles, int speeds, double speed_max);
 
 // (5.29): b^(i)(θ) = b_0^(i) + Σ_{j=1}^{6} b_2j^(i) sin[2j(θ + ε_2j)].

@@ -49,30 +49,38 @@ TEST(F1ElasticEquilibrium, MaxwellianIsRecovered) {
     sample_configuration(sim.state(), frame, sampling, windows);
   }
   F1Options options;
-  options.bootstrap = 12;
+  options.bootstrap = 40;
   options.speed_bins = options.angle_bins = 48;
   const WindowResult r = analyse_window(windows[0], options);
-  ASSERT_TRUE(r.analysed) << r.warning;
-  // (The ψ fit is a fit of noise here: along its degenerate directions, α_p → 0 with Q_p free,
-  // it may exhaust its evaluation limit, so its convergence is not required.)
-  EXPECT_TRUE(r.estimate.once.speed.report.converged && r.estimate.series.report.converged);
+  ASSERT_TRUE(r.analysed) << r.warning;  // the three fits of the estimate converged
+  EXPECT_EQ(r.errors.converged_replicates, r.errors.replicates);
   const SineSeries& b = r.estimate.series;
   const SineSeries& e = r.errors.series;
   const double s = r.speed_scale, t = r.temperature;
-  // Four bootstrap standard deviations; the fluctuating velocities relative to cell means of
-  // n ≈ 20 disks are a mixture of Gaussians of variances ∝ (1 − 1/n), whose departure from one
-  // Gaussian is O(var(1/n)) ≈ 0.1%, far below the statistical error of 2·10⁵ samples (~1%).
-  EXPECT_LE(std::abs(s * b.mean[1]), 4.0 * s * e.mean[1]) << "sqrt(2T) b0^(1) = " << s * b.mean[1];
-  EXPECT_LE(std::abs(2.0 * t * b.mean[2] - 1.0), 4.0 * 2.0 * t * e.mean[2]) << "2T b0^(2) = " << 2.0 * t * b.mean[2];
-  EXPECT_LE(std::abs(b.mean[0] - std::log(2.0 * M_PI * t)), 4.0 * e.mean[0]) << "b0^(0) = " << b.mean[0];
+  // Five bootstrap standard deviations.  Errors from B = 40 replicates of m = 50 snapshots carry
+  // ν = 2/(2/(B − 1) + 2/(m − 1)) ≈ 22 degrees of freedom, so a deviation in bootstrap errors follows
+  // Student's t: P(|t₂₂| > 5) = 5·10⁻⁵ per number, and the 21 numbers below fail by chance in 0.1% of
+  // seeds (four errors from 12 replicates, ν ≈ 9, failed 3 of 40 seeds by chance).  Snapshots one
+  // collision per particle apart are positively correlated, so the bootstrap slightly
+  // underestimates the spread; the fluctuating velocities relative to cell means of n ≈ 20 disks
+  // are a mixture of Gaussians of variances ∝ (1 − 1/n), whose departure from one Gaussian is
+  // O(var(1/n)) ≈ 0.1%, far below the statistical error of 2·10⁵ samples (~1%).
+  constexpr double kErrors = 5.0;
+  EXPECT_LE(std::abs(s * b.mean[1]), kErrors * s * e.mean[1]) << "sqrt(2T) b0^(1) = " << s * b.mean[1];
+  EXPECT_LE(std::abs(2.0 * t * b.mean[2] - 1.0), kErrors * 2.0 * t * e.mean[2]) << "2T b0^(2) = " << 2.0 * t * b.mean[2];
+  EXPECT_LE(std::abs(b.mean[0] - std::log(2.0 * M_PI * t)), kErrors * e.mean[0]) << "b0^(0) = " << b.mean[0];
+  // When no harmonic of (5.21) is resolved (as expected here), each has the speed dependence of φ*:
+  // f̃* is f̃*(v)·g(θ), and the harmonics of b^(1), b^(2) vanish up to round-off, as do their errors.
+  const double round_off = 1e-12 * std::abs(b.mean[0]);
   for (int j = 0; j < SineSeries::kHarmonics; ++j)
-    for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(b.amplitude[j][i]), 4.0 * e.amplitude[j][i]) << "j " << j + 1 << " i " << i;
+    for (int i = 0; i < 3; ++i)
+      EXPECT_LE(std::abs(b.amplitude[j][i]), kErrors * e.amplitude[j][i] + round_off) << "j " << j + 1 << " i " << i;
   EXPECT_NEAR(r.estimate.once_integrals.moment.trace() / r.estimate.direct.trace(), 1.0, 0.01);
   EXPECT_NEAR(r.estimate.twice_integrals.moment.trace() / r.estimate.direct.trace(), 1.0, 0.05);
 
   // The bound for independent samples is a lower bound here too (snapshots one collision per
-  // particle apart are positively correlated).  Bootstrap errors from 12 replicates scatter by
-  // ~21%; the estimator's variance is ≤ 1.5 × the bound (unit tier) and snapshot correlation can
+  // particle apart are positively correlated).  Bootstrap errors from 40 replicates scatter by
+  // ~15%; the estimator's variance is ≤ 1.5 × the bound (unit tier) and snapshot correlation can
   // add as much again: errors within [0.4, 2.5] × the bound.
   const Eigen::Matrix2d bound = test_statistics::maxwellian_means_bound_times_n() / static_cast<double>(r.samples);
   const struct {
