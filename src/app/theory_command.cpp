@@ -10,6 +10,7 @@ void add_theory_command(CLI::App& root) {
   theory->require_subcommand(1);
   add_cooling_theory(*theory);
   add_shear_theory(*theory);
+  add_shear_start(*theory);
 }
 
 }  // namespace granule::app

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/theory_checks.hpp"
+#include "app/theory_clustering_lines.hpp"
 #include "app/theory_subcommands.hpp"
 #include "app/theory_table.hpp"
 #include "theory/kinetic_scales.hpp"
@@ -161,13 +162,9 @@ void add_shear_scales(CLI::App& theory) {
     const double Ti = o->initial_temperature > 0.0 ? o->initial_temperature : T0;
     const double k = 2.0 * pi * o->mode / o->box;
     const double h = th::shear_fluctuation_rate(k, Ti, o->particles);
-    const bool hot = h > gamma;
-    const auto window =
-        hot ? th::clustering_window_hot(eps, gamma, h) : th::clustering_window_cold(eps, gamma, h);
-    const double tau_m = hot ? th::mass_motion_time_hot(k, l, eps, h)
-                             : th::mass_motion_time_cold(k, l, eps, h, gamma);
+    const auto scales = th::clustering_scales(k, l, eps, gamma, h);
     require_finite(*cmd, {"diameter", "l", "T0", "h", "tau_m", "1/s3"},
-                   {sigma, l, T0, h, tau_m, th::linear_growth_time(k, l, eps, gamma)});
+                   {sigma, l, T0, h, scales.mass_motion_time, scales.linear_growth_time});
     Table table;
     table.summary = {
         fmt::format("eps {:.6g}  sqrt(eps) {:.6g}  diameter {:.6g}  l = pi sigma/8nu {:.6g}", eps,
@@ -177,14 +174,13 @@ void add_shear_scales(CLI::App& theory) {
                     k * l, th::shear_delta_star(l, o->box, eps),
                     th::shear_delta_bar_of_mode(o->mode, l, o->box, eps)),
         fmt::format("shear fluctuation h ~ k sqrt(T_i/N) = {:.6g}   gamma/h = {:.6g} ({})", h,
-                    gamma / h, hot ? "h >> gamma: (4.36), (4.37)" : "h << gamma: (4.39)-(4.41)"),
-        fmt::format("tau_c = 1/gamma {:.6g}   tau_m {:.6g}   1/s3 ~ sqrt(eps)/(kl gamma) {:.6g}",
-                    th::convective_time(gamma), tau_m, th::linear_growth_time(k, l, eps, gamma)),
-        fmt::format("clustering window {:.6g} < kl < {:.6g}: {}; this mode {}", window.lower,
-                    window.upper, window.open() ? "open" : "empty",
-                    window.contains(k * l) ? "clusters" : "does not cluster"),
-        fmt::format("cluster separation L0 = l/sqrt(eps) = {:.6g} = {:.6g} L", l / std::sqrt(eps),
-                    l / std::sqrt(eps) / o->box)};
+                    gamma / h,
+                    scales.hot ? "h >> gamma: (4.36), (4.37)" : "h << gamma: (4.39)-(4.41)")};
+    for (auto& line : clustering_lines(scales, k, l, sigma, o->box)) {
+      table.summary.push_back(std::move(line));
+    }
+    table.summary.push_back(fmt::format("cluster separation L0 = l/sqrt(eps) = {:.6g} = {:.6g} L",
+                                        l / std::sqrt(eps), l / std::sqrt(eps) / o->box));
     print_table(*cmd, table, false);
   });
 }

@@ -9,5 +9,8 @@ namespace granule::app {
 void add_cooling_theory(CLI::App& theory);
 // shear-stability, shear-scales, steady-shear: the sheared gas (thesis chapters 3 and 4).
 void add_shear_theory(CLI::App& theory);
+// shear-start: the early-time temperature and clustering window of a hot or cold start under
+// shear (thesis §4.2).
+void add_shear_start(CLI::App& theory);
 
 }  // namespace granule::app

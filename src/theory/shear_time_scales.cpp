@@ -42,4 +42,15 @@ KlWindow clustering_window_cold(double eps, double shear_rate, double h) {
   return {std::sqrt(shear_rate / h) * root, root};
 }
 
+ClusteringScales clustering_scales(double k, double mean_free_path, double eps, double shear_rate,
+                                   double h) {
+  const bool hot = h > shear_rate;
+  return {hot, convective_time(shear_rate),
+          hot ? mass_motion_time_hot(k, mean_free_path, eps, h)
+              : mass_motion_time_cold(k, mean_free_path, eps, h, shear_rate),
+          linear_growth_time(k, mean_free_path, eps, shear_rate),
+          hot ? clustering_window_hot(eps, shear_rate, h)
+              : clustering_window_cold(eps, shear_rate, h)};
+}
+
 }  // namespace granule::theory

@@ -46,4 +46,18 @@ KlWindow clustering_window_hot(double eps, double shear_rate, double h);
 // Clustering window for h ≪ γ, (4.39)–(4.40): √(γ/h)√ε < kl < √ε; empty whenever γ > h.
 KlWindow clustering_window_cold(double eps, double shear_rate, double h);
 
+// The clustering picture of §4.2 at one wavenumber k, in the regime γ/h selects: the hot start
+// (h > γ) has τm (4.36) and the window (4.37); the cold start (h ≤ γ) has τ′m (4.41) and
+// (4.39)–(4.40).
+struct ClusteringScales {
+  bool hot;                   // h > γ
+  double convective_time;     // τc (4.6)
+  double mass_motion_time;    // τm or τ′m
+  double linear_growth_time;  // 1/s3 (4.38, corrected)
+  KlWindow window;
+};
+
+ClusteringScales clustering_scales(double k, double mean_free_path, double eps, double shear_rate,
+                                   double h);
+
 }  // namespace granule::theory

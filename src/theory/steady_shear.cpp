@@ -32,10 +32,16 @@ double steady_shear_temperature_jenkins_richman(double restitution, double shear
          (1.0 / (1.0 - e) - 7.0 / 16.0);
 }
 
+double heated_steady_temperature(double heating_function, double mean_free_path, double eps) {
+  return mean_free_path * mean_free_path * heating_function / (2.0 * pi * eps);
+}
+
 double steady_shear_temperature_kinetic(double restitution, double shear_rate, double diameter,
                                         double area_fraction) {
-  const double l = mean_free_path(diameter, area_fraction);
-  return l * l * shear_rate * shear_rate / (pi * inelasticity(restitution));
+  // Tr D̂² = 2γ² for v = (γy, 0) by (4.4).
+  return heated_steady_temperature(2.0 * shear_rate * shear_rate,
+                                   mean_free_path(diameter, area_fraction),
+                                   inelasticity(restitution));
 }
 
 double diameter_for_area_fraction(double area_fraction, int particle_count, double box_x,

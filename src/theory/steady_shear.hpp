@@ -21,6 +21,12 @@ double steady_shear_temperature_tan_fit(double restitution, double shear_rate, d
 double steady_shear_temperature_jenkins_richman(double restitution, double shear_rate,
                                                 double diameter, double area_fraction);
 
+// The steady temperature of (4.1) under a uniform viscous heating function Tr D̂² [1/time²]:
+// the balance of its heating and dissipation terms, (√π/16)σ√T Tr D̂² = (8/√π)(ν²/σ)εT^{3/2},
+// gives T = l² Tr D̂²/(2πε) with l = πσ/8ν. (4.5) is the case Tr D̂² = 2γ², and (4.28)'s
+// saturation value the case of (4.27).
+double heated_steady_temperature(double heating_function, double mean_free_path, double eps);
+
 // T0 = l²γ²/(πε) with l = πσ/8ν, (4.5): the homogeneous steady state of the thesis's equations
 // (4.1)–(4.3). Their dissipation term carries 8/√π with ε = 1 − ẽ², twice the Boltzmann rate,
 // so T0 is half the ẽ → 1 limit of (3.2) (docs/theory.md).

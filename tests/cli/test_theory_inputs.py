@@ -41,6 +41,14 @@ REFUSED = [
     (["steady-shear", "--shear-rate", "-100"], "--shear-rate = -100", "[1e-30, 1e+30]"),
     (["steady-shear", "--box-y", "inf"], "--box-y = inf", "[1e-30, 1e+30]"),
     (["steady-shear", "--particles", "0"], "--particles = 0", "[2, 2147483647]"),
+    (["shear-start", "-e", "1", "--initial-temperature", "1"], "--restitution = 1", "(0, 1)"),
+    (["shear-start", "--initial-temperature", "0"], "--initial-temperature = 0", "[1e-60, 1e+60]"),
+    (["shear-start", "--temperature-over-steady", "-2"], "--temperature-over-steady = -2", "(0, 1e+120]"),
+    (["shear-start", "--initial-temperature", "1", "--kl", "0"], "--kl = 0", "(0, 1000000]"),
+    (["shear-start", "--initial-temperature", "1", "--mode", "-1"], "--mode = -1", "[1, 2147483647]"),
+    (["shear-start", "--initial-temperature", "1", "--time-max", "inf"], "--time-max = inf", "(0, 1e+300]"),
+    (["shear-start", "--initial-temperature", "1", "--box-y", "0"], "--box-y = 0", "[1e-30, 1e+30]"),
+    (["shear-start", "--initial-temperature", "1", "--points", "0"], "--points = 0", "[1, 10000]"),
     # Each option in range, but together beyond double precision: the last guard.
     (["steady-shear", "--area-fraction", "1e-300", "--diameter", "1e30", "--shear-rate", "1e30"],
      "T_fit_3.1 = inf", "beyond double precision"),
@@ -55,6 +63,9 @@ ACCEPTED = [
     ["shear-stability", "-e", "1e-9", "--theta-deg", "0", "--points", "2"],
     ["shear-scales", "-e", "0.999", "--particles", "2", "--box", "1e30", "--shear-rate", "1e-30", "--mode", "1"],
     ["shear-scales", "--particles", "2147483647", "--diameter", "1e-9", "--initial-temperature", "1e60"],
+    ["shear-start", "-e", "0.999", "--particles", "2", "--box-x", "1e30", "--box-y", "1e30", "--shear-rate", "1e-30",
+     "--initial-temperature", "1e-60", "--points", "2"],
+    ["shear-start", "--particles", "2147483647", "--diameter", "1e-9", "--temperature-over-steady", "1e-30", "--kl", "1e6"],
     ["steady-shear", "-e", "0.5", "--shear-rate", "1e30", "--box-x", "1e-30", "--box-y", "1e-30", "--particles", "2"],
 ]
 
