@@ -33,7 +33,7 @@ constexpr NumberRange kKl{0.0, 1e6, true, false};
 // T_i/T0: any ratio that keeps T_i inside the temperature range is allowed (checked on T_i).
 constexpr NumberRange kTemperatureRatio{0.0, 1e120, true, false};
 // The curve ends after this many saturation times 1/r of (4.26) unless --time-max says otherwise:
-// A(t) is then within 4e-2 of 1 for any start (|α| < 1, so 1 − A ≤ 4e^{−rt}/(1 − e^{−rt})²).
+// A(t) is then within 3e-2 of 1 for any start (|α| < 1, so |A − 1| ≤ 4e^{−rt}/(1 − e^{−rt})²).
 constexpr double kSaturationTimes = 5.0;
 
 struct Opts {
