@@ -64,17 +64,54 @@ CellGrid engine_grid(const RunConfig& config) {
   return *choice.grid;
 }
 
+// initial.from: frame K of another run, which must hold the same disks in the same box.
+ParticleState state_from_run(const RunConfig& config) {
+  const InitialSource& from = *config.initial_from;
+  const std::int64_t frame = from.frame.value_or(-1);
+  SnapshotRead read;
+  try {
+    std::string path = from.directory + "/snapshots.h5";
+    if (!std::filesystem::exists(path) && std::filesystem::exists(path + ".partial")) path += ".partial";
+    read = read_snapshot(path, frame);
+  } catch (const std::exception& error) {
+    throw CommandFailure{kExitBadInput, fmt::format("initial.from = \"{}\", initial.frame = {}: {}", from.directory,
+                                                    from.frame ? std::to_string(*from.frame) : "last", error.what())};
+  }
+  const SystemParams& theirs = read.metadata.system;
+  const SystemParams& ours = config.system;
+  if (theirs.particles != ours.particles || theirs.diameter != ours.diameter || theirs.length_x != ours.length_x ||
+      theirs.length_y != ours.length_y) {
+    throw CommandFailure{kExitBadInput,
+                         fmt::format("initial.from = \"{}\" holds N = {}, σ = {}, box [{}, {}]; this run has N = {}, "
+                                     "σ = {}, box [{}, {}]: system.* must match the run it starts from",
+                                     from.directory, theirs.particles, theirs.diameter, theirs.length_x, theirs.length_y,
+                                     ours.particles, ours.diameter, ours.length_x, ours.length_y)};
+  }
+  return read.frame.particles;
+}
+
 std::unique_ptr<RunSession> new_session(const RunConfig& config, const CellGrid& grid, const RunOptions& options) {
   const std::string& out = options.out_dir;
   check_memory_for_run(config, grid);
-  const InitialStateResult initial =
-      make_initial_state(config.system, config.initial_temperature, config.seed, config.placement);
-  if (!initial.error.empty()) {
-    throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.area_fraction)};
+  // Until production starts the images move at the velocity of the initial profile: U(0) of the
+  // protocol, or 0 for the static gas of §4.3 (initial.shear_profile = false).
+  const double protocol_start = ShearProtocol(config.system.shear_velocity, config.system.shear_history).velocity(0.0);
+  ClockState clock;
+  clock.held_shear_velocity = config.initial_shear_profile || config.initial_from ? protocol_start : 0.0;
+  ParticleState state;
+  if (config.initial_from) {
+    state = state_from_run(config);
+  } else {
+    InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
+                                                    config.placement, clock.held_shear_velocity);
+    if (!initial.error.empty()) {
+      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.area_fraction)};
+    }
+    state = std::move(initial.state);
   }
   prepare_new_output_directory(out, options.force);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  return std::make_unique<RunSession>(config, grid, out, initial.state);
+  return std::make_unique<RunSession>(config, grid, out, state, clock);
 }
 
 std::unique_ptr<RunSession> resumed_session(const RunConfig& config, const CellGrid& grid, const std::string& out) {

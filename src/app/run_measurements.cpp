@@ -162,8 +162,9 @@ void RunMeasurements::after_step(Simulation& sim, bool final) {
   }
 }
 
-void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisions) {
+void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity) {
   if (!interval_moments_) return;
+  frame_.shear_velocity = shear_velocity;  // the profile u(y) subtracted is that of U now
   interval_moments_->add(state, frame_, config_.fields.subtract_shear_profile);
   last_sample_collisions_ = collisions;
 }
@@ -171,6 +172,7 @@ void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisi
 void RunMeasurements::write_fields_frame(const Simulation& sim) {
   const bool subtract = config_.fields.subtract_shear_profile;
   const ParticleState state = sim.state();
+  frame_.shear_velocity = sim.image_velocity();
   CellMoments instant(grid_);
   instant.add(state, frame_, subtract);
   // The interval average includes the configuration that closes it (once).

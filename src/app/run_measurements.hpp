@@ -40,8 +40,9 @@ class RunMeasurements {
   // After every step of the loop: start the collision statistics, refresh the local density at
   // window boundaries, write a fields frame when one is due (`final` forces one).
   void after_step(Simulation& sim, bool final);
-  // A configuration sampled by the run (output.every_*): added to the fields' interval average.
-  void on_sample(const ParticleState& state, std::int64_t collisions);
+  // A configuration sampled by the run (output.every_*), the images moving at `shear_velocity`:
+  // added to the fields' interval average.
+  void on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity);
   // Write collisions.h5 and close fields.h5.  Returns the summary figures for summary.json.
   nlohmann::json finish(const Simulation& sim);
 

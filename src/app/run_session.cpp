@@ -22,12 +22,13 @@ std::int64_t collisions_for(const RunConfig& config, std::optional<double> c) {
 
 }  // namespace
 
-RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial)
+RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial,
+                       const ClockState& clock)
     : config_(config), grid_(grid), out_(std::move(out)) {
   // The elastic pre-run of thesis §1.4.2; the restitution is switched on when it ends.
   SystemParams elastic = config.system;
   elastic.restitution = 1.0;
-  sim_ = std::make_unique<Simulation>(elastic, grid, initial);
+  sim_ = std::make_unique<Simulation>(elastic, grid, initial, clock);
   equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
@@ -75,7 +76,7 @@ void RunSession::start_production() {
   diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
-  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions()));
+  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity()));
   snapshots_ = std::make_unique<SnapshotWriter>(
       out_ + "/snapshots.h5", SnapshotMetadata{system, config_.area_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
                                                config_.seed, kVersion});
@@ -150,13 +151,14 @@ void RunSession::write_checkpoint() {
 
 void RunSession::append_snapshot() {
   last_snapshot_events_ = sim_->events();
-  snapshots_->append({sim_->state(), sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(), sim_->strain()});
+  snapshots_->append({sim_->state(), sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(),
+                      sim_->strain(), sim_->image_velocity()});
 }
 
 void RunSession::take_sample() {
   const ParticleState state = sim_->state();
-  samples_.push_back(diagnostics_->sample(state, sim_->time(), sim_->collisions()));
-  measurements_->on_sample(state, sim_->collisions());
+  samples_.push_back(diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity()));
+  measurements_->on_sample(state, sim_->collisions(), sim_->image_velocity());
 }
 
 void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }

@@ -27,8 +27,10 @@ namespace granule::app {
 
 class RunSession {
  public:
-  // A new run into the existing, empty directory `out` from the initial state of §1.4.2.
-  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial);
+  // A new run into the existing, empty directory `out` from the initial state of §1.4.2, the
+  // images held at `clock.held_shear_velocity` until production starts.
+  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial,
+             const ClockState& clock);
   // A run continued from its checkpoint in `out`.
   RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint);
   // A run continued from snapshot frame K in `out` (whose later frames and rows were set aside):

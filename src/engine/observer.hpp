@@ -25,6 +25,7 @@ struct CollisionRecord {
   double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves
                                  // at v_x + image_y U relative to disk 2 itself (§1.4.2)
+  double image_velocity_x = 0.0; // that image's velocity relative to disk 2: image_y U at contact
 };
 
 // A disk leaving through the top or bottom of a Lees–Edwards box re-enters from the image on the

@@ -23,8 +23,8 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const P
                        const ClockState& clock)
     : params_(params),
       grid_(grid),
-      frame_{params.length_x, params.length_y, params.shear_velocity},
-      shear_rate_(params.shear_velocity / params.length_y) {
+      frame_{params.length_x, params.length_y, 0.0},
+      protocol_(params.shear_velocity, params.shear_history) {
   load(state);
   allocate_arrays();
   if (params.tc_duration > 0.0) {
@@ -33,8 +33,20 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const P
   }
   clock_base_ = clock.time;
   t_ref_ = clock.strain_reference;
+  strain_ref_ = clock.strain_at_reference;
   collisions_ = clock.collisions;
   events_ = clock.events;
+  protocol_running_ = clock.protocol_running;
+  if (protocol_running_) {
+    // The segment a run that got here would be in: the chain of segments is fixed by the protocol.
+    const ShearSegment segment = protocol_.segment_containing(clock.time);
+    frame_.shear_velocity = segment.velocity;
+    segment_end_ = segment.end;
+    actions_.schedule(TimedAction::kShearSegment, segment.end - clock_base_);
+  } else {
+    frame_.shear_velocity = clock.held_shear_velocity.value_or(protocol_.velocity(0.0));
+  }
+  shear_rate_ = frame_.shear_velocity / params.length_y;
   rebuild();
   collapse_detector_.reset(collapse_window(), t_now_);
 }
@@ -46,6 +58,7 @@ void Simulation::allocate_arrays() {
   kind_.assign(n, EventKind::kNone);
   partner_.assign(n, -1);
   partner_count_.assign(n, 0);
+  collision_time_.assign(n, kInf);
 }
 
 double Simulation::shear_offset() const {
@@ -58,7 +71,7 @@ double Simulation::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   const std::size_t total = bytes(x_) + bytes(y_) + bytes(vx_) + bytes(vy_) + bytes(t_) +
                             bytes(count_) + bytes(cell_) + bytes(last_collision_) + bytes(kind_) +
-                            bytes(partner_) + bytes(partner_count_) + lists_.bytes() + heap_.bytes();
+                            bytes(partner_) + bytes(partner_count_) + bytes(collision_time_) + lists_.bytes() + heap_.bytes();
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
 
@@ -80,12 +93,23 @@ void Simulation::rebase() {
   const double delta = t_now_;
   for (auto& t : t_) t -= delta;
   for (auto& t : last_collision_) t -= delta;
+  for (auto& t : collision_time_) t -= delta;
   heap_.shift_times(delta);
   collapse_detector_.shift_times(delta);
+  actions_.shift_times(delta);
   t_ref_ -= delta;
   clock_base_ += delta;
   t_now_ = 0.0;
   events_since_rebase_ = 0;
+  schedule_realignment();
+}
+
+void Simulation::schedule_realignment() {
+  // Computed afresh from t_ref whenever it moves (never shifted), so that a restored checkpoint
+  // schedules it bit for bit as the uninterrupted run did.
+  const double half = 0.5 * grid_.strain_period;
+  actions_.schedule(TimedAction::kRealignGrid,
+                    shear_rate_ != 0.0 ? t_ref_ + (std::copysign(half, shear_rate_) - strain_ref_) / shear_rate_ : kInf);
 }
 
 void Simulation::rebuild() {
@@ -136,6 +160,9 @@ ClockState Simulation::clock_state() const {
   ClockState clock;
   clock.time = time();
   clock.strain_reference = t_ref_ - t_now_;
+  clock.strain_at_reference = strain_ref_;
+  clock.protocol_running = protocol_running_;
+  clock.held_shear_velocity = frame_.shear_velocity;
   clock.collisions = collisions_;
   clock.events = events_;
   clock.last_collision = last_collision_;
@@ -149,21 +176,53 @@ void Simulation::start_production(double restitution) {
   collisions_ = 0;
   events_ = 0;
   for (auto& t : last_collision_) t = -kInf;
+  protocol_running_ = true;
+  enter_shear_segment(protocol_.segment_from(0.0));
 }
 
-Simulation::Prediction Simulation::next_event(std::int32_t i) const {
-  const double dt_i = t_now_ - t_[at(i)];
+void Simulation::enter_shear_segment(const ShearSegment& segment) {
+  segment_end_ = segment.end;
+  actions_.schedule(TimedAction::kShearSegment, segment.end - clock_base_);
+  if (segment.velocity != frame_.shear_velocity) change_image_velocity(segment.velocity);
+}
+
+void Simulation::change_image_velocity(double velocity) {
+  strain_ref_ = strain();
+  t_ref_ = t_now_;
+  frame_.shear_velocity = velocity;
+  shear_rate_ = velocity / params_.length_y;
+  schedule_realignment();
+  repredict_after_shear_change();
+}
+
+void Simulation::repredict_after_shear_change() {
+  const auto n = static_cast<std::int32_t>(params_.particles);
+  for (std::int32_t i = 0; i < n; ++i) {
+    const int row = grid_.row_of(cell_[at(i)]);
+    if (row == 0 || row == grid_.ny - 1) {
+      predict(i);  // its 3×3 block reaches across the boundary, where the images' velocity changed
+      continue;
+    }
+    // The earliest collision inside the box is unchanged; the crossing in ξ is not.
+    const double dt = t_now_ - t_[at(i)];
+    const Crossing crossing = next_crossing(i, x_[at(i)] + vx_[at(i)] * dt, y_[at(i)] + vy_[at(i)] * dt);
+    const double t_crossing = t_now_ + crossing.delay;
+    const bool collision_first = collision_time_[at(i)] < t_crossing;
+    kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;
+    heap_.update(i, collision_first ? collision_time_[at(i)] : t_crossing);
+  }
+}
+
+Simulation::Crossing Simulation::next_crossing(std::int32_t i, double xi, double yi) const {
   const double vxi = vx_[at(i)];
   const double vyi = vy_[at(i)];
-  const double xi = x_[at(i)] + vxi * dt_i;
-  const double yi = y_[at(i)] + vyi * dt_i;
   const int cell = cell_[at(i)];
   const int column = grid_.column_of(cell);
   const int row = grid_.row_of(cell);
 
-  // Cell crossing.  In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic
-  // boxes have a = 0 and b = v_x.
-  const double s = shear_rate_ * (t_now_ - t_ref_);
+  // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
+  // b = v_x.
+  const double s = strain();
   const double y_rel = yi - 0.5 * params_.length_y;
   const double xi0 = xi - s * y_rel;
   const double a = -shear_rate_ * vyi;
@@ -188,10 +247,21 @@ Simulation::Prediction Simulation::next_event(std::int32_t i) const {
     }
   }
   if (best == kInf) kind = EventKind::kNone;
+  return {kind, best};
+}
+
+Simulation::Prediction Simulation::next_event(std::int32_t i) const {
+  const double dt_i = t_now_ - t_[at(i)];
+  const double vxi = vx_[at(i)];
+  const double vyi = vy_[at(i)];
+  const double xi = x_[at(i)] + vxi * dt_i;
+  const double yi = y_[at(i)] + vyi * dt_i;
+  const Crossing crossing = next_crossing(i, xi, yi);
 
   // Collisions with the disks of the 3×3 block of cells.
   const double sigma = params_.diameter;
   std::int32_t partner = -1;
+  double best = kInf;
   for_each_neighbour(i, [&](std::int32_t j, double shift_x, const ImageShift& row_shift) {
     const double dt_j = t_now_ - t_[at(j)];
     const Vec2 rel_position{x_[at(j)] + vx_[at(j)] * dt_j + shift_x - xi,
@@ -199,19 +269,19 @@ Simulation::Prediction Simulation::next_event(std::int32_t i) const {
     const Vec2 rel_velocity{vx_[at(j)] + row_shift.velocity_x - vxi, vy_[at(j)] - vyi};
     if (const double t = collision_time(rel_position, rel_velocity, sigma); t < best) {
       best = t;
-      kind = EventKind::kCollision;
       partner = j;
     }
   });
-  return {kind, partner, best};
+  return {crossing, partner, best};
 }
 
 void Simulation::predict(std::int32_t i) {
   const Prediction next = next_event(i);
-  kind_[at(i)] = next.kind;
+  kind_[at(i)] = next.kind();
   partner_[at(i)] = next.partner;
   partner_count_[at(i)] = next.partner >= 0 ? count_[at(next.partner)] : 0;
-  heap_.update(i, t_now_ + next.delay);
+  collision_time_[at(i)] = t_now_ + next.collision_delay;
+  heap_.update(i, t_now_ + next.delay());
 }
 
 Simulation::PartnerImage Simulation::nearest_image(double dx, double dy) const {
@@ -329,6 +399,7 @@ bool Simulation::execute_collision(std::int32_t i, std::int32_t j) {
     record.impulse = normal_impulse(v1 - v2, k_hat, e);
     record.restitution = e;
     record.image_y = iy;
+    record.image_velocity_x = shift.velocity_x;
     for (EventObserver* observer : observers_) observer->on_collision(record);
   }
   predict(i);
@@ -344,22 +415,25 @@ void Simulation::realign_sheared_grid() {
 }
 
 StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
-  const double realign_delay =
-      shear_rate_ != 0.0 ? 0.5 * grid_.strain_period / std::abs(shear_rate_) : kInf;
   const std::int64_t rebase_interval = kRebaseEventsPerParticle * params_.particles;
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
   while (true) {
     if (interrupt_ && *interrupt_) return StopReason::kInterrupted;
     const double t_event = heap_.top_time();
-    const double t_realign = t_ref_ + realign_delay;
+    const double t_action = actions_.earliest_time();
     // The stop is decided on the absolute clock the caller reads, time() = clock_base_ + t_now_,
     // so that kTimeReached always means time() ≥ until_time: a stop one ulp short would make the
     // caller ask for the same stop forever.
     const bool stop_due = clock_base_ + t_event >= until_time;
     const double t_stop = until_time - clock_base_;
-    if (t_realign <= t_event && !(stop_due && t_stop <= t_realign)) {
-      t_now_ = std::max(t_now_, t_realign);
-      realign_sheared_grid();
+    // A global action due no later than the next event runs first, unless the stop comes first.
+    if (t_action <= t_event && !(stop_due && t_stop <= t_action)) {
+      t_now_ = std::max(t_now_, t_action);
+      if (actions_.earliest() == TimedAction::kShearSegment) {
+        enter_shear_segment(protocol_.segment_from(segment_end_));
+      } else {
+        realign_sheared_grid();
+      }
       continue;
     }
     if (stop_due) {

@@ -1,16 +1,20 @@
 // The event loop of the thesis's Appendix A: one pending event per particle (its earliest
 // collision or cell crossing) in an indexed heap; lazy free flight with per-particle local
-// times; stale events caught by collision counters; periodic re-basing of the clock; and a
-// sheared cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp).
+// times; stale events caught by collision counters; periodic re-basing of the clock; a sheared
+// cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp); and a time-
+// dependent image velocity U(t) in constant segments (boundary/shear_protocol.hpp), its changes
+// and the grid's re-alignments kept as global timed actions beside the heap.
 #pragma once
 
 #include <algorithm>
 #include <csignal>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "boundary/shear_frame.hpp"
+#include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
@@ -18,6 +22,7 @@
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
 #include "events/event_heap.hpp"
+#include "events/timed_actions.hpp"
 
 namespace granule {
 
@@ -63,7 +68,8 @@ class Simulation {
   ParticleState state() const;
   ClockState clock_state() const;
 
-  // Switch the restitution (the thesis's elastic pre-run ends here) and restart t and c at 0.
+  // Switch the restitution (the thesis's elastic pre-run ends here), restart t and c at 0 and
+  // start the shear protocol: from here on U follows U(t).
   void start_production(double restitution);
 
   // Checks every invariant of the engine — no overlaps beyond round-off, each disk in the cell
@@ -82,7 +88,10 @@ class Simulation {
   double collisions_per_particle() const {
     return static_cast<double>(collisions_) / static_cast<double>(params_.particles);
   }
-  double strain() const { return frame_.shear_rate() * (t_now_ - t_ref_); }
+  // Strain of the sheared cell grid, |s| ≤ strain_period/2; Δ ≡ s L_y (mod L_x).
+  double strain() const { return strain_ref_ + shear_rate_ * (t_now_ - t_ref_); }
+  // The velocity U of the upper images now (the current segment's Ū of the protocol).
+  double image_velocity() const { return frame_.shear_velocity; }
   // Current Lees–Edwards image offset Δ ∈ [0, L_x) (thesis §1.4.2).
   double shear_offset() const;
   const SystemParams& params() const { return params_; }
@@ -109,15 +118,34 @@ class Simulation {
   // Returns true if a physical collision was executed.
   bool execute_collision(std::int32_t i, std::int32_t j);
   void realign_sheared_grid();
+  // When |strain| reaches strain_period/2 at the present image velocity.
+  void schedule_realignment();
+  // Move to the protocol's segment starting now (absolute production time `t`).
+  void enter_shear_segment(const ShearSegment& segment);
+  // A new image velocity from now on: the strain stays continuous, crossings in ξ and pairs across
+  // the boundary change, collisions inside the box do not (only they are kept, re-predicted).
+  void change_image_velocity(double velocity);
+  void repredict_after_shear_change();
   std::int32_t cell_of(double x, double y) const;
   // The earliest event of particle i from the current state (kind, partner, delay), without
   // storing it: predict() stores it, check_invariants() compares with it.
-  struct Prediction {
-    EventKind kind;
-    std::int32_t partner;
+  // Both parts are kept: after a change of U only the crossing needs recomputing.
+  struct Crossing {
+    EventKind kind;  // kNone when the disk never leaves its cell
     double delay;
   };
+  struct Prediction {
+    Crossing crossing;
+    std::int32_t partner;    // the earliest collision in the 3×3 block (−1: none)
+    double collision_delay;  // +inf when none
+    EventKind kind() const {
+      return collision_delay < crossing.delay ? EventKind::kCollision : crossing.kind;
+    }
+    double delay() const { return std::min(collision_delay, crossing.delay); }
+  };
   Prediction next_event(std::int32_t i) const;
+  // The first cell face disk i (now at xi, yi) reaches.
+  Crossing next_crossing(std::int32_t i, double xi, double yi) const;
   // Calls visit(j, shift_x, row_shift) for every disk j ≠ i of the 3×3 block of cells around
   // i's cell, with the image shift that brings j next to i.  The sheared frame is plainly
   // periodic, so images across the boundaries follow from the cell offsets alone.
@@ -134,8 +162,11 @@ class Simulation {
 
   SystemParams params_;
   CellGrid grid_;
-  ShearFrame frame_;
+  ShearFrame frame_;  // its shear_velocity is the current U
   double shear_rate_ = 0.0;
+  ShearProtocol protocol_;
+  bool protocol_running_ = false;
+  double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
   // Particle arrays (struct of arrays, plain ids).  Positions are valid at local time t_[i].
   std::vector<double> x_, y_, vx_, vy_, t_;
@@ -146,9 +177,11 @@ class Simulation {
   std::vector<EventKind> kind_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint32_t> partner_count_;
+  std::vector<double> collision_time_;  // the earliest collision found, pending or not (+inf: none)
 
   CellLists lists_;
   EventHeap heap_;
+  TimedActions actions_;
   CollapseDetector collapse_detector_;
   CollapseReport collapse_;
   std::vector<EventObserver*> observers_;
@@ -156,7 +189,8 @@ class Simulation {
 
   double t_now_ = 0.0;       // relative to clock_base_
   double clock_base_ = 0.0;  // absolute time of t_now_ = 0
-  double t_ref_ = 0.0;       // relative time at which the sheared grid had zero strain
+  double t_ref_ = 0.0;       // relative time at which the grid strain was strain_ref_
+  double strain_ref_ = 0.0;
   std::int64_t collisions_ = 0;
   std::int64_t events_ = 0;
   std::int64_t events_since_rebase_ = 0;

@@ -54,9 +54,13 @@ void Simulation::visit_saved_state(Self& self, Visit&& visit) {
   visit("last_collision", self.last_collision_);
   visit("event_partner", self.partner_);
   visit("event_partner_count", self.partner_count_);
+  visit("collision_time", self.collision_time_);
   visit("t_now", self.t_now_);
   visit("clock_base", self.clock_base_);
   visit("t_ref", self.t_ref_);
+  visit("strain_at_reference", self.strain_ref_);
+  visit("image_velocity", self.frame_.shear_velocity);
+  visit("shear_segment_end", self.segment_end_);
   visit("collisions", self.collisions_);
   visit("events", self.events_);
   visit("events_since_rebase", self.events_since_rebase_);
@@ -88,6 +92,8 @@ void Simulation::save(StateArchive& archive, const std::string& prefix) const {
   std::vector<std::uint8_t> kinds(kind_.size());
   for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<std::uint8_t>(kind_[i]);
   archive.put(prefix + "event_kind", std::move(kinds));
+  archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
+  archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
   lists_.save(archive, prefix + "cell_list_");
   heap_.save(archive, prefix + "heap_");
   collapse_detector_.save(archive, prefix + "collapse_");
@@ -97,8 +103,8 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
                        const std::string& prefix)
     : params_(params),
       grid_(grid),
-      frame_{params.length_x, params.length_y, params.shear_velocity},
-      shear_rate_(params.shear_velocity / params.length_y) {
+      frame_{params.length_x, params.length_y, 0.0},
+      protocol_(params.shear_velocity, params.shear_history) {
   check_matches(archive, prefix, params, grid);
   params_.restitution = archive.scalar(prefix + "restitution");
   const auto n = static_cast<std::size_t>(params.particles);
@@ -114,6 +120,10 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
       value = array_of_size<typename Value::value_type>(archive, prefix + name, tc_only && params.tc_duration <= 0.0 ? 0 : n);
     }
   });
+  shear_rate_ = frame_.shear_velocity / params.length_y;
+  protocol_running_ = archive.integer(prefix + "protocol_running") != 0;
+  actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
+  schedule_realignment();
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
   kind_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -71,11 +71,12 @@ void Simulation::check_invariants() const {
     const double stored = heap_.time_of(i);
     if (stored < t_now_) fail("disk ", i, " has an event in the past");
     const Prediction fresh = next_event(i);
-    if (fresh.kind == EventKind::kNone) continue;
-    const double due = t_now_ + fresh.delay * (1.0 + kDelayTolerance);
-    const bool held = stored <= due || (fresh.partner >= 0 && heap_.time_of(fresh.partner) <= due);
+    const EventKind kind = fresh.kind();
+    if (kind == EventKind::kNone) continue;
+    const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance);
+    const bool held = stored <= due || (kind == EventKind::kCollision && heap_.time_of(fresh.partner) <= due);
     if (!held) {
-      fail("disk ", i, " has its next event (", static_cast<int>(fresh.kind), " with ", fresh.partner, ") at t = ", t_now_ + fresh.delay, " but its slot says ", stored);
+      fail("disk ", i, " has its next event (", static_cast<int>(kind), " with ", fresh.partner, ") at t = ", t_now_ + fresh.delay(), " but its slot says ", stored);
     }
   }
 }

@@ -17,7 +17,8 @@ double area_fraction(const SystemParams& p) {
 }  // namespace
 
 InitialStateResult make_initial_state(const SystemParams& params, double temperature,
-                                      std::uint64_t seed, Placement placement) {
+                                      std::uint64_t seed, Placement placement,
+                                      std::optional<double> profile_velocity) {
   InitialStateResult result;
   ParticleState& s = result.state;
   const auto n = static_cast<std::size_t>(params.particles);
@@ -55,7 +56,7 @@ InitialStateResult make_initial_state(const SystemParams& params, double tempera
     sum_sq += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
   }
   const double scale = sum_sq > 0.0 ? std::sqrt(2.0 * temperature * static_cast<double>(n) / sum_sq) : 0.0;
-  const ShearFrame frame{params.length_x, params.length_y, params.shear_velocity};
+  const ShearFrame frame{params.length_x, params.length_y, profile_velocity.value_or(params.shear_velocity)};
   double total_x = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     s.vx[i] = scale * s.vx[i] + frame.mean_flow(s.y[i]);  // linear shear profile (§1.4.2)

@@ -1,9 +1,11 @@
 // Initial conditions of thesis §1.4.2: uniform non-overlapping positions, Gaussian velocities at
 // temperature T_i (T = ½⟨(v − V)²⟩, unit mass, eq 1.3), zero total momentum, and for
-// Lees–Edwards the linear shear profile u(y) = γ (y − L_y/2) added.
+// Lees–Edwards the linear shear profile u(y) = γ (y − L_y/2) added, γ = U/L_y with U the
+// `profile_velocity` (default: params.shear_velocity; 0 gives the static gas of thesis §4.3).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "engine/system_params.hpp"
@@ -26,6 +28,7 @@ struct InitialStateResult {
 };
 
 InitialStateResult make_initial_state(const SystemParams& params, double temperature,
-                                      std::uint64_t seed, Placement placement);
+                                      std::uint64_t seed, Placement placement,
+                                      std::optional<double> profile_velocity = std::nullopt);
 
 }  // namespace granule

@@ -10,6 +10,7 @@
 
 #include "cells/cell_grid.hpp"
 #include "io/config_reader.hpp"
+#include "io/config_shear.hpp"
 #include "io/input_ranges.hpp"
 
 namespace granule {
@@ -20,8 +21,9 @@ const ConfigSchema& schema() {
   static const ConfigSchema keys = {
       {"", {"seed"}},
       {"system", {"particles", "area_fraction", "diameter", "box", "restitution", "tc_duration"}},
-      {"boundary", {"kind", "shear_velocity"}},
-      {"initial", {"temperature", "equilibrate", "placement"}},
+      {"boundary", {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance"}},
+      {"initial",
+       {"temperature", "temperature_over_steady", "shear_profile", "from", "frame", "equilibrate", "placement"}},
       {"run", {"until_collisions_per_particle", "until_time"}},
       {"output",
        {"every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",
@@ -100,25 +102,6 @@ void resolve_geometry(const ConfigReader& in, RunConfig& c) {
   }
 }
 
-// The speeds: T_i, and U relative to it.  Only numerical bounds (see input_ranges.hpp).
-void resolve_speeds(const ConfigReader& in, RunConfig& c) {
-  SystemParams& s = c.system;
-  c.initial_temperature = in.number("initial.temperature", kTemperatureRange).value_or(1.0);
-  c.lees_edwards = in.text("boundary.kind", {"periodic", "lees-edwards"}).value_or("periodic") == "lees-edwards";
-  const double thermal_speed = std::sqrt(c.initial_temperature);
-  const NumberRange shear_speeds{kSpeedRange.low, std::min(kSpeedRange.high, kMaxShearOverThermalSpeed * thermal_speed)};
-  s.shear_velocity =
-      in.number_if("boundary.shear_velocity", [&](double u) { return u == 0.0 || shear_speeds.contains(std::abs(u)); },
-                   fmt::format("0 or |U| in {} (at most {:g} √T_i with initial.temperature = {}, so that the thermal "
-                               "velocities stay resolved beside the shear profile)",
-                               shear_speeds.text(), kMaxShearOverThermalSpeed, c.initial_temperature))
-          .value_or(0.0);
-  if (!c.lees_edwards && s.shear_velocity != 0.0) {
-    throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\" "
-                                  "(a periodic box has no shear; allowed: 0)", s.shear_velocity)};
-  }
-}
-
 // Exactly one of `count` and `time` may be given.
 void require_one_of(const ConfigReader& in, const std::string& count, const std::string& time) {
   if (in.has(count) && in.has(time)) throw ConfigError{fmt::format("{} and {} are both set: give one", count, time)};
@@ -151,6 +134,14 @@ RunConfig resolve(const toml::table& root) {
   s.restitution = in.number("system.restitution", NumberRange{0.0, 1.0, true, false}).value_or(0.6);
   s.tc_duration = in.number("system.tc_duration", kNonNegative, " (0 switches the TC model off)").value_or(0.0);
   resolve_speeds(in, c);
+  if (const auto from = in.path_text("initial.from")) {
+    for (const char* key : {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile", "initial.placement"}) {
+      if (in.has(key)) throw ConfigError{fmt::format("{} cannot be combined with initial.from: the state comes from {}", key, *from)};
+    }
+    c.initial_from = InitialSource{*from, in.integer("initial.frame", 0, INT32_MAX)};
+  } else if (in.has("initial.frame")) {
+    throw ConfigError{"initial.frame needs initial.from = \"DIR\" (the run whose snapshot frame to start from)"};
+  }
   c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
   const std::string placement = in.text("initial.placement", {"auto", "random", "lattice"}).value_or("auto");
   c.placement = placement == "random" ? Placement::kRandom : placement == "lattice" ? Placement::kLattice : Placement::kAuto;
@@ -256,11 +247,11 @@ std::string to_toml(const RunConfig& c) {
                      "box = [{:.17g}, {:.17g}]\nrestitution = {:.17g}\ntc_duration = {:.17g}\n\n",
                      c.seed, s.particles, s.diameter, c.area_fraction, s.length_x, s.length_y,
                      s.restitution, s.tc_duration);
-  out += fmt::format("[boundary]\nkind = \"{}\"\nshear_velocity = {:.17g}\n\n",
-                     c.lees_edwards ? "lees-edwards" : "periodic", s.shear_velocity);
+  out += speeds_to_toml(c);
   const char* placement = c.placement == Placement::kRandom ? "random" : c.placement == Placement::kLattice ? "lattice" : "auto";
-  out += fmt::format("[initial]\ntemperature = {:.17g}\nequilibrate = {:.17g}\nplacement = \"{}\"\n\n[run]\n",
-                     c.initial_temperature, c.equilibrate, placement);
+  out += fmt::format("equilibrate = {:.17g}\n", c.equilibrate);
+  if (!c.initial_from) out += fmt::format("placement = \"{}\"\n", placement);
+  out += "\n[run]\n";
   if (c.until_collisions_per_particle) out += fmt::format("until_collisions_per_particle = {:.17g}\n", *c.until_collisions_per_particle);
   if (c.until_time) out += fmt::format("until_time = {:.17g}\n", *c.until_time);
   out += "\n[output]\n";

@@ -38,12 +38,22 @@ struct CollisionStatisticsConfig {
   double max_length = 0.0;  // resolved (default: 10 l with l = Lx Ly / (2 N σ), §3.1.2)
 };
 
+// [initial] from = "DIR", frame = K: start from frame K of another run's snapshots.h5 (default its
+// last frame) instead of a new gas, to change e, U or the protocol (thesis §4.3).
+struct InitialSource {
+  std::string directory;
+  std::optional<std::int64_t> frame;
+};
+
 struct RunConfig {
   std::uint64_t seed = 1;
   SystemParams system;           // diameter always resolved
   double area_fraction = 0.0;    // ν = πNσ²/(4 L_x L_y), always resolved
   bool lees_edwards = false;
-  double initial_temperature = 1.0;
+  double initial_temperature = 1.0;  // resolved (also from initial.temperature_over_steady)
+  std::optional<double> initial_temperature_over_steady;  // T_i / T₀ of (4.5), when given so
+  bool initial_shear_profile = true;  // false: a static gas, sheared only from t = 0 on (§4.3)
+  std::optional<InitialSource> initial_from;
   double equilibrate = 0.0;      // elastic collisions per particle before e is switched on
   Placement placement = Placement::kAuto;
   std::optional<double> until_collisions_per_particle;

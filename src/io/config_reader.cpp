@@ -68,11 +68,52 @@ void ConfigReader::check_known_keys(const ConfigSchema& schema) const {
 }
 
 const toml::node* ConfigReader::find(const std::string& path) const {
-  const auto dot = path.find('.');
-  if (dot == std::string::npos) return root_.get(path);
-  const toml::node* section = root_.get(path.substr(0, dot));
-  if (!section || !section->is_table()) return nullptr;
-  return section->as_table()->get(path.substr(dot + 1));
+  // "section.key" or, inside an inline table, "section.table.key".
+  const toml::table* table = &root_;
+  std::size_t start = 0;
+  for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
+    const toml::node* inner = table->get(path.substr(start, dot - start));
+    if (!inner || !inner->is_table()) return nullptr;
+    table = inner->as_table();
+    start = dot + 1;
+  }
+  return table->get(path.substr(start));
+}
+
+std::vector<std::pair<double, double>> ConfigReader::number_pairs(const std::string& path, const std::string& what) const {
+  const toml::node* node = find(path);
+  std::vector<std::pair<double, double>> out;
+  if (!node) return out;
+  const auto fail = [&] {
+    return ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty list of points [{}, ...] of finite numbers",
+                                   path, show_node(*node), what)};
+  };
+  const toml::array* list = node->as_array();
+  if (!list || list->empty()) throw fail();
+  for (const toml::node& item : *list) {
+    const toml::array* pair = item.as_array();
+    if (!pair || pair->size() != 2) throw fail();
+    const auto a = (*pair)[0].value<double>();
+    const auto b = (*pair)[1].value<double>();
+    if (!a || !b || !std::isfinite(*a) || !std::isfinite(*b)) throw fail();
+    out.emplace_back(*a + 0.0, *b + 0.0);
+  }
+  return out;
+}
+
+bool ConfigReader::table_with_keys(const std::string& path, const std::set<std::string>& allowed) const {
+  const toml::node* node = find(path);
+  if (!node) return false;
+  if (!node->is_table()) {
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected a table {{ {} }}", path, show_node(*node), join(allowed))};
+  }
+  for (const auto& [key, value] : *node->as_table()) {
+    if (!allowed.count(std::string{key.str()})) {
+      throw ConfigError{fmt::format("unknown key {}.{} (value {}); allowed keys: {}", path, key.str(), show_node(value),
+                                    join(allowed))};
+    }
+  }
+  return true;
 }
 
 std::optional<double> ConfigReader::number(const std::string& path, const NumberRange& range,
@@ -107,6 +148,16 @@ std::optional<std::string> ConfigReader::text(const std::string& path, const std
   const auto value = node->value<std::string>();
   if (!value || !allowed.count(*value)) {
     throw ConfigError{fmt::format("{} = {} is not allowed: expected one of {}", path, show_node(*node), join(allowed))};
+  }
+  return value;
+}
+
+std::optional<std::string> ConfigReader::path_text(const std::string& path) const {
+  const toml::node* node = find(path);
+  if (!node) return std::nullopt;
+  const auto value = node->value<std::string>();
+  if (!value || value->empty()) {
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty string (a path)", path, show_node(*node))};
   }
   return value;
 }

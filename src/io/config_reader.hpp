@@ -41,6 +41,8 @@ class ConfigReader {
                                   const std::string& allowed_text) const;
   std::optional<std::int64_t> integer(const std::string& path, std::int64_t low, std::int64_t high) const;
   std::optional<std::string> text(const std::string& path, const std::set<std::string>& allowed) const;
+  // A non-empty string (a file or directory path).
+  std::optional<std::string> path_text(const std::string& path) const;
   // [a, b], both in `range`.
   std::optional<std::pair<double, double>> number_pair(const std::string& path, const NumberRange& range) const;
   std::optional<bool> boolean(const std::string& path) const;
@@ -48,6 +50,10 @@ class ConfigReader {
   std::vector<std::pair<double, double>> windows(const std::string& path) const;
   // [nx, ny], integers in [low, high].
   std::optional<std::pair<int, int>> int_pair(const std::string& path, int low, int high) const;
+  // A list of points [[a, b], ...] of finite numbers (`what` names them in the message: "[t, U]").
+  std::vector<std::pair<double, double>> number_pairs(const std::string& path, const std::string& what) const;
+  // An inline table at `path` whose keys must be among `allowed`; false when absent.
+  bool table_with_keys(const std::string& path, const std::set<std::string>& allowed) const;
 
  private:
   const toml::node* find(const std::string& path) const;

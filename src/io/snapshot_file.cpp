@@ -14,7 +14,7 @@ namespace {
 using namespace h5;
 
 constexpr const char* kFormat = "granule-snapshots";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: per-frame shear_velocity and strain_at_reference
 
 // The per-frame scalars of the schema, in one list for writing and reading.
 template <typename Frame, typename Visit>
@@ -24,6 +24,8 @@ void for_each_scalar(Frame& frame, Visit&& visit) {
   visit("shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset);
   visit("strain", H5T_NATIVE_DOUBLE, &frame.strain);
   visit("strain_reference", H5T_NATIVE_DOUBLE, &frame.clock.strain_reference);
+  visit("strain_at_reference", H5T_NATIVE_DOUBLE, &frame.clock.strain_at_reference);
+  visit("shear_velocity", H5T_NATIVE_DOUBLE, &frame.shear_velocity);
   visit("collisions", H5T_NATIVE_INT64, &frame.clock.collisions);
   visit("events", H5T_NATIVE_INT64, &frame.clock.events);
 }
@@ -133,6 +135,7 @@ SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
     s.particles.vy[i] = buffer[2 * i + 1];
   }
   for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
+  s.clock.protocol_running = true;  // frames are written in production only
   if (m.system.tc_duration > 0.0) {
     s.clock.last_collision.resize(n);
     read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);

@@ -30,6 +30,7 @@ struct SnapshotFrame {
   double collisions_per_particle = 0.0;
   double shear_offset = 0.0;  // Lees–Edwards image offset Δ ∈ [0, L_x)
   double strain = 0.0;        // strain of the sheared cell grid (restart state)
+  double shear_velocity = 0.0;  // U(t): the images' velocity at this frame (shear protocol)
 };
 
 class SnapshotWriter {

@@ -43,13 +43,16 @@ CellFields GlobalDiagnostics::cell_fields(const ParticleState& state, bool subtr
   return fields_from_moments(moments, frame_, 0.0, subtract_shear_profile);
 }
 
-DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions) {
+DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions,
+                                            double shear_velocity) {
+  frame_.shear_velocity = shear_velocity;  // u(y) of the images' velocity now (shear protocols)
   const std::size_t n = state.size();
   const double nd = static_cast<double>(n);
   const double area = params_.length_x * params_.length_y;
   DiagnosticsSample out;
   out.t = t;
   out.c = static_cast<double>(collisions) / nd;
+  out.shear_velocity = shear_velocity;
 
   // V(r) and T(r) of the coarse-graining cells (§1.4.3, eq 1.3), with velocities taken relative to
   // the imposed mean flow u(y): otherwise the shear γ h across a cell of height h would count as

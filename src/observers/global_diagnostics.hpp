@@ -20,6 +20,7 @@ namespace granule {
 struct DiagnosticsSample {
   double t = 0.0;
   double c = 0.0;                     // collisions per particle, thesis convention (total / N)
+  double shear_velocity = 0.0;        // U(t): the images' velocity (Lees–Edwards protocol; 0 if periodic)
   double kinetic_energy = 0.0;        // ½⟨v²⟩ per particle, lab frame
   double temperature = 0.0;           // T̄: mean over occupied cells of T(r) (eq 1.3), v − u(y) in place of v
   double temperature_thesis_cells = 0.0;  // the same with lab velocities (the thesis's T̄; = T̄ if periodic)
@@ -39,6 +40,7 @@ template <typename Sample, typename Visit>
 void for_each_column(Sample& s, Visit&& visit) {
   visit("t", s.t);
   visit("c", s.c);
+  visit("shear_velocity", s.shear_velocity);
   visit("kinetic_energy", s.kinetic_energy);
   visit("temperature", s.temperature);
   visit("temperature_thesis_cells", s.temperature_thesis_cells);
@@ -59,9 +61,9 @@ class GlobalDiagnostics final : public EventObserver {
   GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y);
 
   void on_collision(const CollisionRecord& record) override;
-  // Measure the configuration `state` at time t (collisions since production started) and
-  // close the current interval.
-  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions);
+  // Measure the configuration `state` at time t (collisions since production started), when the
+  // images move at `shear_velocity`, and close the current interval.
+  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions, double shear_velocity);
   // Forget the open interval's collisions (e.g. after the elastic pre-run).
   void restart_interval(double t, std::int64_t collisions);
   // The open interval (a checkpoint).

@@ -1,0 +1,159 @@
+#include "boundary/shear_protocol.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace granule {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// g(x) = x + e^{−x} − 1 without cancellation: the ramp's integral over a short segment.
+double ramp_excess(double x) {
+  if (x < 1e-2) return x * x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x / 120.0)));
+  return x + std::expm1(-x);
+}
+
+}  // namespace
+
+ShearProtocol::ShearProtocol(double steady_velocity, const ShearHistory& history)
+    : steady_(steady_velocity), history_(history) {}
+
+double ShearProtocol::base_velocity(double t) const {
+  const auto& points = history_.schedule;
+  if (!points.empty()) {
+    if (t < points.front().time) return points.front().velocity;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+      const ShearSchedulePoint& p = points[k];
+      const ShearSchedulePoint& q = points[k + 1];
+      if (t >= p.time && t < q.time) return p.velocity + (q.velocity - p.velocity) * ((t - p.time) / (q.time - p.time));
+    }
+    return points.back().velocity;  // at or after the last point (a step takes its later value)
+  }
+  if (history_.ramp_time > 0.0) return t <= 0.0 ? 0.0 : -steady_ * std::expm1(-t / history_.ramp_time);
+  return steady_;
+}
+
+double ShearProtocol::base_integral(double a, double b) const {
+  const auto& points = history_.schedule;
+  if (!points.empty()) {
+    // ∫ of the piecewise-linear U, piece by piece (steps have zero width and add nothing).
+    const auto antiderivative = [&](double t) {
+      const ShearSchedulePoint& first = points.front();
+      if (t <= first.time) return first.velocity * (t - first.time);
+      double sum = 0.0;
+      for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const ShearSchedulePoint& p = points[k];
+        const ShearSchedulePoint& q = points[k + 1];
+        if (t >= q.time) {
+          sum += 0.5 * (q.time - p.time) * (p.velocity + q.velocity);
+        } else if (t > p.time) {
+          const double u = t - p.time;
+          const double slope = (q.velocity - p.velocity) / (q.time - p.time);
+          return sum + u * (p.velocity + 0.5 * slope * u);
+        }
+      }
+      return sum + points.back().velocity * (t - points.back().time);
+    };
+    return antiderivative(b) - antiderivative(a);
+  }
+  const double tau = history_.ramp_time;
+  if (tau > 0.0) {
+    // U₀ ∫_a^b (1 − e^{−t/τ}) dt = U₀ [(b − a)(1 − e^{−a/τ}) + τ e^{−a/τ} g((b − a)/τ)].
+    const double a0 = std::max(a, 0.0);
+    if (b <= a0) return 0.0;
+    const double decay = std::exp(-a0 / tau);
+    return steady_ * ((b - a0) * -std::expm1(-a0 / tau) + tau * decay * ramp_excess((b - a0) / tau));
+  }
+  return steady_ * (b - a);
+}
+
+double ShearProtocol::velocity(double t) const {
+  double u = base_velocity(t);
+  if (const auto& osc = history_.oscillation; osc && t >= osc->start && t <= osc->end()) {
+    u += osc->amplitude * std::sin(2.0 * std::numbers::pi * (t - osc->start) / osc->period);
+  }
+  return u;
+}
+
+double ShearProtocol::integral(double a, double b) const {
+  double sum = base_integral(a, b);
+  if (const auto& osc = history_.oscillation) {
+    const double u = std::max(a, osc->start);
+    const double w = std::min(b, osc->end());
+    if (w > u) {
+      const double k = 2.0 * std::numbers::pi / osc->period;
+      sum += osc->amplitude / k * (std::cos(k * (u - osc->start)) - std::cos(k * (w - osc->start)));
+    }
+  }
+  return sum;
+}
+
+double ShearProtocol::velocity_scale() const {
+  double scale = std::abs(steady_);
+  if (!history_.schedule.empty()) {
+    scale = 0.0;
+    for (const ShearSchedulePoint& p : history_.schedule) scale = std::max(scale, std::abs(p.velocity));
+  }
+  if (history_.oscillation) scale += std::abs(history_.oscillation->amplitude);
+  return scale;
+}
+
+bool ShearProtocol::constant() const {
+  if (history_.oscillation && history_.oscillation->amplitude != 0.0) return false;
+  for (const ShearSchedulePoint& p : history_.schedule) {
+    if (p.velocity != history_.schedule.front().velocity) return false;
+  }
+  return history_.schedule.empty() ? history_.ramp_time <= 0.0 || steady_ == 0.0 : true;
+}
+
+double ShearProtocol::next_break(double t) const {
+  double next = kInf;
+  for (const ShearSchedulePoint& p : history_.schedule) {
+    if (p.time > t) next = std::min(next, p.time);
+  }
+  if (const auto& osc = history_.oscillation) {
+    if (osc->start > t) next = std::min(next, osc->start);
+    if (osc->end() > t) next = std::min(next, osc->end());
+  }
+  return next;
+}
+
+double ShearProtocol::slope_bound(double t) const {
+  double bound = 0.0;
+  const auto& points = history_.schedule;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (t >= points[k].time && t < points[k + 1].time) {
+      bound = std::abs((points[k + 1].velocity - points[k].velocity) / (points[k + 1].time - points[k].time));
+    }
+  }
+  // |dU/dt| = |U₀|/τ e^{−t/τ} decreases: its value at the segment start bounds the segment.
+  if (points.empty() && history_.ramp_time > 0.0) {
+    bound = std::abs(steady_) / history_.ramp_time * std::exp(-std::max(t, 0.0) / history_.ramp_time);
+  }
+  if (const auto& osc = history_.oscillation; osc && t >= osc->start && t < osc->end()) {
+    bound += 2.0 * std::numbers::pi * std::abs(osc->amplitude) / osc->period;
+  }
+  return bound;
+}
+
+ShearSegment ShearProtocol::segment_from(double t) const {
+  const double limit = next_break(t);
+  const double slope = slope_bound(t);
+  double end = limit;
+  if (slope > 0.0) end = std::min(limit, t + history_.tolerance * velocity_scale() / slope);
+  if (end <= t) end = std::min(limit, std::nextafter(t, kInf));  // always move on
+  if (end == kInf) return {t, kInf, velocity(t)};
+  return {t, end, integral(t, end) / (end - t)};
+}
+
+ShearSegment ShearProtocol::segment_containing(double t) const {
+  ShearSegment segment = segment_from(0.0);
+  while (segment.end <= t) segment = segment_from(segment.end);
+  return segment;
+}
+
+}  // namespace granule
