@@ -40,14 +40,17 @@ def extrapolated(xp, fp):
 
 def panel(fig, ax, cax, t_edges, y_edges, values, cmap, norm, label):
     import matplotlib
-    from matplotlib.ticker import FormatStrFormatter
+    from matplotlib.colors import LogNorm
+    from matplotlib.ticker import FuncFormatter, NullFormatter
 
     colors = matplotlib.colormaps[cmap].copy()
     colors.set_bad("0.85")  # empty rows
     mesh = ax.pcolormesh(t_edges, y_edges, values.T, cmap=colors, norm=norm, shading="flat")
     bar = fig.colorbar(mesh, cax=cax, label=label)
-    bar.ax.yaxis.set_major_formatter(FormatStrFormatter("%.3g"))
-    bar.ax.yaxis.set_minor_formatter(FormatStrFormatter("%.3g"))
+    if isinstance(norm, LogNorm):  # plain numbers (0.1, not 10⁻¹); minor ticks labelled only within a decade
+        plain = FuncFormatter(lambda v, _: f"{v:g}")
+        bar.ax.yaxis.set_major_formatter(plain)
+        bar.ax.yaxis.set_minor_formatter(plain if norm.vmax < 10.0 * norm.vmin else NullFormatter())
     ax.set_ylabel("y")
 
 
@@ -108,7 +111,12 @@ def main():
     axes[-1].set_xlabel("t")
     axes[0].set_xlim(t_edges[0], t_edges[-1])
     if len(t) > 1 and np.all(np.diff(t) > 0) and np.all(np.diff(c) > 0):
-        top = axes[0].secondary_xaxis("top", functions=(extrapolated(t, c), extrapolated(c, t)))
+        t_to_c = extrapolated(t, c)
+        top = axes[0].secondary_xaxis("top", functions=(t_to_c, extrapolated(c, t)))
+        # c grows fastest while the gas is hot: ticks at the c of the time ticks (2 digits), not evenly in c.
+        low, high = axes[0].get_xlim()
+        ticks = [x for x in axes[-1].get_xticks() if low <= x <= high]
+        top.set_xticks(sorted({float(f"{float(t_to_c(x)):.2g}") for x in ticks}))
         top.set_xlabel("c (collisions per particle)")
     fig.suptitle(title, fontsize=10)
     save(fig, a.out, a.dpi)
