@@ -42,16 +42,19 @@ std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames) {
   return frame < 0 ? frames + frame : frame;
 }
 
-void require_hdf5_format(const std::string& path, const char* format, const char* producer) {
-  std::string found;
+std::string hdf5_format(const std::string& path) {
   try {
     h5::Handle file = h5::open_file(path);
-    if (H5Aexists(file.get(), "format") > 0) found = h5::read_string_attribute(file.get(), "format");
+    const std::string format = H5Aexists(file.get(), "format") > 0 ? h5::read_string_attribute(file.get(), "format") : "";
     file.close();
+    return format;
   } catch (const IoError& error) {
     throw BadPlotInput(fmt::format("cannot read {} as HDF5: {}", path, error.what()));
   }
-  if (found != format) throw BadPlotInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
+}
+
+void require_hdf5_format(const std::string& path, const char* format, const char* producer) {
+  if (hdf5_format(path) != format) throw BadPlotInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
 }
 
 std::vector<double> read_frame_series(const std::string& path, const char* name) {

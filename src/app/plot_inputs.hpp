@@ -25,6 +25,8 @@ std::string output_beside(const std::string& run_dir_or_file, const std::string&
 // Resolve a frame index (negative counts from the end) among `frames`; throws BadPlotInput naming --frame.
 std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames);
 
+// The root attribute `format` of an HDF5 file ("" without one); throws BadPlotInput when `path` is not HDF5.
+std::string hdf5_format(const std::string& path);
 // Throws BadPlotInput unless `path` is an HDF5 file whose root attribute `format` is `format`.
 void require_hdf5_format(const std::string& path, const char* format, const char* producer);
 

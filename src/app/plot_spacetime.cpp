@@ -42,7 +42,7 @@ std::pair<std::string, std::string> source_file(const SpacetimeArguments& a) {
       from = fs::exists(fs::path(a.input) / "fields.h5") || fs::exists(fs::path(a.input) / "fields.h5.partial") ? "fields"
                                                                                                               : "snapshots";
     } else {
-      from = fs::path(a.input).filename().string().starts_with("snapshots") ? "snapshots" : "fields";
+      from = hdf5_format(a.input) == "granule-snapshots" ? "snapshots" : "fields";
     }
   }
   if (from != "fields" && from != "snapshots") throw BadPlotInput(fmt::format("--from {} is not one of fields, snapshots", from));
