@@ -1,6 +1,6 @@
 """Shared helpers of the plot scripts run by `granule plot` (Debian's /usr/bin/python3, Agg backend).
 
-Every script takes the input file first, then --out, --frame, --dpi; bad input exits with code 2
+Every script takes the input file first, then --out, --frame (if the input has frames to choose), --dpi; bad input exits with code 2
 and a message naming the option and its allowed range, writing nothing.  Figures have a fixed size
 in inches, so a picture is (width_in × dpi) × (height_in × dpi) pixels.  Scripts that draw curves of
 an analysis also take --data FILE: the numbers drawn, as JSON, so they can be checked or re-plotted.
@@ -17,11 +17,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def parser(kind, description, data=False):
+def parser(kind, description, data=False, frame=True):
     p = argparse.ArgumentParser(prog=f"granule plot {kind}", description=description)
     p.add_argument("input")
     p.add_argument("--out", required=True)
-    p.add_argument("--frame", type=int, default=-1)
+    if frame:
+        p.add_argument("--frame", type=int, default=-1)
     p.add_argument("--dpi", type=int, default=100)
     if data:
         p.add_argument("--data", help="also write the numbers drawn, as JSON")

@@ -8,6 +8,7 @@ void add_plot_command(CLI::App& root) {
   plot->require_subcommand(1);
   add_plot_picture_commands(*plot);
   add_plot_matplotlib_commands(*plot);
+  add_plot_spacetime_command(*plot);
   add_plot_export_command(*plot);
 }
 

@@ -12,6 +12,7 @@ void add_plot_command(CLI::App& root);
 // One per file (src/app/plot_*.cpp).
 void add_plot_picture_commands(CLI::App& plot);     // config, movie
 void add_plot_matplotlib_commands(CLI::App& plot);  // fields, timeseries, profiles, phase
+void add_plot_spacetime_command(CLI::App& plot);    // spacetime
 void add_plot_export_command(CLI::App& plot);       // export (extended XYZ, VTK)
 
 }  // namespace granule::app

@@ -3,9 +3,15 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <spawn.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <sstream>
+
+#include "io/hdf5_util.hpp"
+#include "io/io_error.hpp"
 
 extern char** environ;
 
@@ -36,6 +42,31 @@ std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames) {
   return frame < 0 ? frames + frame : frame;
 }
 
+std::string hdf5_format(const std::string& path) {
+  try {
+    h5::Handle file = h5::open_file(path);
+    const std::string format = H5Aexists(file.get(), "format") > 0 ? h5::read_string_attribute(file.get(), "format") : "";
+    file.close();
+    return format;
+  } catch (const IoError& error) {
+    throw BadPlotInput(fmt::format("cannot read {} as HDF5: {}", path, error.what()));
+  }
+}
+
+void require_hdf5_format(const std::string& path, const char* format, const char* producer) {
+  if (hdf5_format(path) != format) throw BadPlotInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
+}
+
+std::vector<double> read_frame_series(const std::string& path, const char* name) {
+  h5::Handle file = h5::open_file(path);
+  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
+  h5::check(exists, file.get(), "look for", name);
+  std::vector<double> values(exists > 0 ? static_cast<std::size_t>(h5::complete_frames(file.get())) : 0);
+  for (std::size_t k = 0; k < values.size(); ++k) h5::read_frame(file.get(), name, H5T_NATIVE_DOUBLE, &values[k], k);
+  file.close();
+  return values;
+}
+
 int run_program(const std::vector<std::string>& argv) {
   std::vector<char*> pointers;
   for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
@@ -45,6 +76,17 @@ int run_program(const std::vector<std::string>& argv) {
   int status = 0;
   if (waitpid(child, &status, 0) < 0) return 127;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+bool program_in_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path != nullptr ? path : "");
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    const fs::path candidate = fs::path(folder.empty() ? "." : folder) / name;
+    std::error_code ignored;
+    if (fs::is_regular_file(candidate, ignored) && access(candidate.c_str(), X_OK) == 0) return true;
+  }
+  return false;
 }
 
 int run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
@@ -57,15 +99,20 @@ int run_plot_script(const std::string& script, const std::vector<std::string>& a
 
 void finish_plot_command(const std::string& kind, const std::function<int()>& body) {
   int code = 0;
+  std::string message;
   try {
     code = body();
   } catch (const BadPlotInput& error) {
-    fmt::print(stderr, "granule plot {}: error: {}\n", kind, error.what());
     code = 2;
+    message = error.what();
+  } catch (const IoError& error) {
+    code = 4;
+    message = error.what();
   } catch (const std::exception& error) {
-    fmt::print(stderr, "granule plot {}: error: {}\n", kind, error.what());
     code = 1;
+    message = error.what();
   }
+  if (!message.empty()) fmt::print(stderr, "granule plot {}: error: {}\n", kind, message);
   throw CLI::RuntimeError(code);
 }
 

@@ -2,6 +2,7 @@
 // helper programs (Debian's Python for matplotlib, ffmpeg) and mapping errors to exit codes.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -24,14 +25,36 @@ std::string output_beside(const std::string& run_dir_or_file, const std::string&
 // Resolve a frame index (negative counts from the end) among `frames`; throws BadPlotInput naming --frame.
 std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames);
 
+// The root attribute `format` of an HDF5 file ("" without one); throws BadPlotInput when `path` is not HDF5.
+std::string hdf5_format(const std::string& path);
+// Throws BadPlotInput unless `path` is an HDF5 file whose root attribute `format` is `format`.
+void require_hdf5_format(const std::string& path, const char* format, const char* producer);
+
+// The one-dimensional per-frame dataset `name` of an HDF5 file of frames (e.g. `shear_velocity` of
+// snapshots.h5) over its complete frames; empty when the file has no such dataset.
+std::vector<double> read_frame_series(const std::string& path, const char* name);
+
 // Runs a program (argv[0] is looked up in PATH) and returns its exit code (127 if it cannot start).
 int run_program(const std::vector<std::string>& argv);
+
+// Whether an executable `name` is in one of the folders of PATH.
+bool program_in_path(const std::string& name);
+
+// A temporary file or folder (a `.partial` output, scratch frames), removed whatever happens once
+// the command ends; a published output no longer exists under this name, so nothing is lost.
+struct RemovedAtExit {
+  std::filesystem::path path;
+  ~RemovedAtExit() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
 
 // Runs a script of python/granule_plots with Debian's Python; returns its exit code.
 int run_plot_script(const std::string& script, const std::vector<std::string>& arguments);
 
-// Runs a plot command's body and ends the program with its exit code: 2 on BadPlotInput, 1 on
-// any other error (messages prefixed with "granule plot <kind>: error:").
+// Runs a plot command's body and ends the program with its exit code: 2 on BadPlotInput, 4 on
+// IoError (an output that cannot be written), 1 on any other error (messages prefixed with "granule plot <kind>: error:").
 [[noreturn]] void finish_plot_command(const std::string& kind, const std::function<int()>& body);
 
 }  // namespace granule::app

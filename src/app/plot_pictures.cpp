@@ -1,5 +1,5 @@
 // `granule plot config` (one configuration picture, thesis Figs 2.2, 2.3, 3.4, 3.10) and
-// `granule plot movie` (one such picture per snapshot, encoded as mp4 by ffmpeg).
+// `granule plot movie` (one such picture per snapshot with its time, encoded as mp4 by ffmpeg).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -10,6 +10,8 @@
 #include "app/plot_command.hpp"
 #include "app/plot_inputs.hpp"
 #include "app/plot_run_picture.hpp"
+#include "io/atomic_file.hpp"
+#include "io/io_error.hpp"
 
 namespace granule::app {
 
@@ -78,6 +80,7 @@ render::PictureOptions picture_options(const PictureArguments& a) {
 int plot_config(const PictureArguments& a) {
   const render::PictureOptions options = picture_options(a);
   const std::string snapshots = locate_run_file(a.input, "snapshots.h5");
+  require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
   const std::int64_t frame = resolve_frame(a.frame, read_snapshot(snapshots, 0).frames);
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
   render::write_png(render_snapshot_picture(read_snapshot(snapshots, frame), options), out);
@@ -85,46 +88,59 @@ int plot_config(const PictureArguments& a) {
   return 0;
 }
 
-struct ScratchFolder {
-  std::filesystem::path path;
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
-
 struct MovieArguments {
   PictureArguments picture;
   double fps = 10.0;
+  std::int64_t stride = 1;
+  bool no_caption = false;
 };
 
+// "t = …   c = …" of a frame, and the image velocity U when the snapshot file stores it per frame.
+std::string frame_caption(const SnapshotFrame& frame, const std::vector<double>& shear_velocity, std::size_t k) {
+  std::string caption = fmt::format("t = {:.4g}   c = {:.4g}", frame.clock.time, frame.collisions_per_particle);
+  if (k < shear_velocity.size()) caption += fmt::format("   U = {:.4g}", shear_velocity[k]);
+  return caption;
+}
+
 int plot_movie(const MovieArguments& m) {
-  const render::PictureOptions options = picture_options(m.picture);
+  render::PictureOptions options = picture_options(m.picture);
   if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw BadPlotInput(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
+  if (m.stride < 1) throw BadPlotInput(fmt::format("--stride {} must be at least 1", m.stride));
   const std::string snapshots = locate_run_file(m.picture.input, "snapshots.h5");
+  require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
   const std::int64_t frames = read_snapshot(snapshots, 0).frames;
   const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
-  // Frames go to a scratch folder beside the output, removed whatever happens.
+  // Without the encoder the movie cannot be written: say so before drawing anything.
+  if (!program_in_path("ffmpeg")) {
+    throw IoError(fmt::format("cannot write {}: ffmpeg is not in PATH (install Debian's ffmpeg)", out));
+  }
+  // Frames go to a scratch folder beside the output and the movie to `<out>.partial`, both removed
+  // whatever happens; only a complete movie is renamed to `out`.
   const std::filesystem::path scratch = out + ".frames";
-  std::filesystem::remove_all(scratch);
-  std::filesystem::create_directories(scratch);
-  const ScratchFolder cleanup{scratch};
-  for (std::int64_t k = 0; k < frames; ++k) {
-    render::write_png(render_snapshot_picture(read_snapshot(snapshots, k), options),
-                      (scratch / fmt::format("frame_{:06d}.png", k)).string());
+  const std::string partial = out + ".partial";
+  const RemovedAtExit remove_scratch{scratch}, remove_partial{partial};
+  std::error_code error;
+  std::filesystem::remove_all(scratch, error);
+  if (error || !std::filesystem::create_directories(scratch, error)) {
+    throw io_error(fmt::format("cannot create {}", scratch.string()), error.value());
+  }
+  const std::vector<double> shear_velocity = read_frame_series(snapshots, "shear_velocity");
+  std::int64_t drawn = 0;
+  for (std::int64_t k = 0; k < frames; k += m.stride, ++drawn) {
+    const SnapshotRead snapshot = read_snapshot(snapshots, k);
+    if (!m.no_caption) options.caption = frame_caption(snapshot.frame, shear_velocity, static_cast<std::size_t>(k));
+    render::write_png(render_snapshot_picture(snapshot, options), (scratch / fmt::format("frame_{:06d}.png", drawn)).string());
   }
   // H.264 needs even dimensions: pad by one white pixel where needed.
-  const std::string partial = out + ".partial";
   const int status = run_program({"ffmpeg", "-loglevel", "error", "-y", "-framerate", fmt::format("{}", m.fps), "-i",
                                   (scratch / "frame_%06d.png").string(), "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
                                   "-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mp4", partial});
   if (status != 0) {
-    std::filesystem::remove(partial);
-    throw std::runtime_error(status == 127 ? "ffmpeg was not found (install Debian's ffmpeg)"
-                                           : fmt::format("ffmpeg failed with exit code {}", status));
+    throw IoError(status == 127 ? fmt::format("cannot write {}: ffmpeg could not be started", out)
+                                : fmt::format("cannot write {}: ffmpeg failed with exit code {}", out, status));
   }
-  std::filesystem::rename(partial, out);
-  fmt::print("wrote {} ({} frames at {} per second)\n", out, frames, m.fps);
+  publish_file(partial, out);
+  fmt::print("wrote {} ({} of {} snapshots at {} per second)\n", out, drawn, frames, m.fps);
   return 0;
 }
 
@@ -142,9 +158,12 @@ void add_plot_picture_commands(CLI::App& plot) {
 
   auto movie = std::make_shared<MovieArguments>();
   movie->picture.width = 800;
-  CLI::App* m = plot.add_subcommand("movie", "An mp4 movie of a run, one configuration picture per snapshot (needs ffmpeg)");
+  CLI::App* m = plot.add_subcommand(
+      "movie", "An mp4 movie of a run, one configuration picture per snapshot with its t and c (needs ffmpeg)");
   add_picture_options(m, movie->picture);
   m->add_option("--fps", movie->fps, "Frames per second, 0.1 … 120")->capture_default_str();
+  m->add_option("--stride", movie->stride, "Draw every S-th snapshot (0, S, 2S, …)")->capture_default_str();
+  m->add_flag("--no-caption", movie->no_caption, "Do not print t, c (and U) in the top-left corner of each frame");
   m->add_option("--out", movie->picture.out, "mp4 file (default: movie.mp4 beside the input)");
   m->callback([movie] { finish_plot_command("movie", [&] { return plot_movie(*movie); }); });
 }

@@ -221,6 +221,10 @@ RasterImage render_configuration(const ConfigurationScene& scene, const PictureO
   }
   if (options.arrows) draw_arrows(cr, fields, map, std::max(1.0, width / 800.0));
   if (options.legend) draw_legend(cr, options, width, low, high);
+  if (!options.caption.empty()) {
+    const double font = std::max(10.0, width / 45.0);
+    draw_caption(cr, 0.3 * font, 0.3 * font, font, options.caption);
+  }
   cairo_destroy(cr);
 
   cairo_surface_flush(surface);

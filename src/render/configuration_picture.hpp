@@ -44,6 +44,8 @@ struct PictureOptions {
   int cells_x = 0;  // coarse-graining grid of the arrows and field colours; 0: automatic
   int cells_y = 0;
   bool legend = true;
+  // One line drawn in the top-left corner (a movie frame's time and c); empty: none.
+  std::string caption;
   // Disks smaller than this radius on screen are drawn at it, so that dilute systems of 10^6
   // disks (σ well below a pixel) stay visible.
   double min_disk_radius_px = 0.6;

@@ -65,4 +65,16 @@ void draw_color_bar(cairo_t* cr, double x, double y, double width, double height
   cairo_show_text(cr, high_text);
 }
 
+void draw_caption(cairo_t* cr, double x, double y, double font, const std::string& text) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  const double margin = 0.4 * font;
+  white_panel(cr, x, y, extents.x_advance + 2.0 * margin, 1.2 * font + 2.0 * margin);
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  cairo_move_to(cr, x + margin, y + margin + font);
+  cairo_show_text(cr, text.c_str());
+}
+
 }  // namespace granule::render
