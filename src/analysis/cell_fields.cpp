@@ -1,22 +1,37 @@
 #include "analysis/cell_fields.hpp"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace granule {
 
 CellMoments::CellMoments(const FieldGrid& g)
-    : grid(g), count(g.cells()), px(g.cells()), py(g.cells()), pxx(g.cells()), pxy(g.cells()), pyy(g.cells()) {}
+    : grid(g), count(g.cells()), px(g.cells()), py(g.cells()), pxx(g.cells()), pxy(g.cells()), pyy(g.cells()),
+      energy_flux_x(g.cells()), energy_flux_y(g.cells()) {}
+
+namespace {
+
+// The moment arrays with their checkpoint names, in one list.
+template <typename Moments>
+auto moment_arrays(Moments& m) {
+  return std::array{std::pair{"count", &m.count}, std::pair{"px", &m.px},   std::pair{"py", &m.py},
+                    std::pair{"pxx", &m.pxx},     std::pair{"pxy", &m.pxy}, std::pair{"pyy", &m.pyy},
+                    std::pair{"energy_flux_x", &m.energy_flux_x}, std::pair{"energy_flux_y", &m.energy_flux_y}};
+}
+
+}  // namespace
 
 void CellMoments::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_integer(prefix + "configurations", configurations);
-  for (const auto& [name, values] : {std::pair{"count", &count}, {"px", &px}, {"py", &py}, {"pxx", &pxx}, {"pxy", &pxy}, {"pyy", &pyy}}) {
+  for (const auto& [name, values] : moment_arrays(*this)) {
     archive.put(prefix + name, *values);
   }
 }
 
 void CellMoments::restore(const StateArchive& archive, const std::string& prefix) {
   configurations = static_cast<int>(archive.integer(prefix + "configurations"));
-  for (const auto& [name, values] : {std::pair{"count", &count}, {"px", &px}, {"py", &py}, {"pxx", &pxx}, {"pxy", &pxy}, {"pyy", &pyy}}) {
+  for (const auto& [name, values] : moment_arrays(*this)) {
     *values = archive.get_sized<double>(prefix + name, grid.cells());
   }
 }
@@ -32,6 +47,8 @@ void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool 
     pxx[c] += vx * vx;
     pxy[c] += vx * vy;
     pyy[c] += vy * vy;
+    energy_flux_x[c] += (vx * vx + vy * vy) * vx;
+    energy_flux_y[c] += (vx * vx + vy * vy) * vy;
   }
   ++configurations;
 }
@@ -58,9 +75,9 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
   const FieldGrid& g = m.grid;
   const std::size_t n = g.cells();
   const double k = m.configurations > 0 ? static_cast<double>(m.configurations) : 1.0;
-  CellFields f{g, std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
-               std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
-               std::vector<double>(n), std::vector<double>(n)};
+  CellFields f;
+  f.grid = g;
+  for_each_field(f, [n](const char*, std::vector<double>& v) { v.assign(n, 0.0); });
   for (std::size_t c = 0; c < n; ++c) {
     f.count[c] = m.count[c] / k;
     f.density[c] = f.count[c] / g.cell_area();
@@ -77,6 +94,15 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
     f.kinetic_xy[c] = f.density[c] * xy;
     f.kinetic_yy[c] = f.density[c] * yy;
     f.pressure_kinetic[c] = 0.5 * (f.kinetic_xx[c] + f.kinetic_yy[c]);
+    // q^(k) from raw moments, as (1.5) does for the stress: with S₂ = Σ v v and S₃ = Σ |v|² v,
+    //   Σ |v − V|² (v − V) = S₃ − V Tr S₂ − 2 S₂·V + 2 n |V|² V   (using Σ v = n V).
+    const double n_c = m.count[c];
+    const double trace = m.pxx[c] + m.pyy[c];
+    const double speed2 = vx * vx + vy * vy;
+    const double third_x = m.energy_flux_x[c] - vx * trace - 2.0 * (m.pxx[c] * vx + m.pxy[c] * vy) + 2.0 * n_c * speed2 * vx;
+    const double third_y = m.energy_flux_y[c] - vy * trace - 2.0 * (m.pxy[c] * vx + m.pyy[c] * vy) + 2.0 * n_c * speed2 * vy;
+    f.heat_flux_kinetic_x[c] = 0.5 * third_x / (k * g.cell_area());
+    f.heat_flux_kinetic_y[c] = 0.5 * third_y / (k * g.cell_area());
   }
   // Vorticity by central differences; across the top and bottom the neighbour row is the
   // Lees–Edwards image of the opposite row (shifted by Δ, moving at ±U in the lab frame).
@@ -101,9 +127,18 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
 
 namespace granule {
 
+std::vector<double> row_means(const FieldGrid& g, const std::vector<double>& field) {
+  std::vector<double> means(static_cast<std::size_t>(g.ny), 0.0);
+  for (std::size_t c = 0; c < g.cells(); ++c) means[c / static_cast<std::size_t>(g.nx)] += field[c];
+  for (double& v : means) v /= g.nx;
+  return means;
+}
+
 StreamwiseProfiles streamwise_profiles(const CellFields& f) {
   const FieldGrid& g = f.grid;
   StreamwiseProfiles p;
+  p.heat_flux_kinetic_x = row_means(g, f.heat_flux_kinetic_x);
+  p.heat_flux_kinetic_y = row_means(g, f.heat_flux_kinetic_y);
   for (int iy = 0; iy < g.ny; ++iy) {
     double rho = 0.0, vx = 0.0, vy = 0.0, t = 0.0;
     for (int ix = 0; ix < g.nx; ++ix) {

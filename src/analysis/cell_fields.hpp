@@ -1,9 +1,10 @@
 // Coarse-grained fields of thesis §1.4.3 from particle configurations: number density ρ(r),
 // velocity V(r) (momentum over mass), temperature T(r) (1.3), kinetic stress τ^(k) (1.4) via the
-// identity (1.5), kinetic pressure (half trace) and vorticity.  Unit mass: ρ is both the number
-// and the mass density (particles per unit area).
+// identity (1.5), kinetic pressure (half trace), vorticity and the kinetic heat flux
+// q^(k) = Σ ½|c|² c / cell area, c = v − V(r) (docs/macrostructure.md).  Unit mass: ρ is both the
+// number and the mass density (particles per unit area).
 //
-// Fields come from cell moments (count, Σv, Σvv).  Moments add up, so the same code gives the
+// Fields come from cell moments (count, Σv, Σvv, Σ|v|²v).  Moments add up, so the same code gives the
 // instantaneous fields of one configuration and the interval-averaged fields of many (sums over
 // K configurations, ρ divided by K): V and T are then mass-weighted averages, as the ensemble
 // averages of §5.2.
@@ -22,6 +23,7 @@ struct CellMoments {
   FieldGrid grid;
   int configurations = 0;  // how many configurations were added
   std::vector<double> count, px, py, pxx, pxy, pyy;
+  std::vector<double> energy_flux_x, energy_flux_y;  // Σ |v|² v: the third moments of q^(k)
 
   explicit CellMoments(const FieldGrid& g);
   // Add one configuration.  With `subtract_shear_profile`, each particle's velocity is taken
@@ -43,6 +45,8 @@ struct CellFields {
   std::vector<double> kinetic_yy;
   std::vector<double> pressure_kinetic;  // ½ Tr τ^(k) = ρ T
   std::vector<double> vorticity;    // ω = ∂V_y/∂x − ∂V_x/∂y, central differences across cells
+  std::vector<double> heat_flux_kinetic_x;  // q^(k) = ρ⟨½|v'|² v'⟩, v' = v − V(r); 0 in empty cells
+  std::vector<double> heat_flux_kinetic_y;
 };
 
 // `frame` and `shear_offset` (the Lees–Edwards image offset Δ) give the neighbours of the top and
@@ -68,13 +72,18 @@ void for_each_field(Fields& f, Visit&& visit) {
   visit("kinetic_yy", f.kinetic_yy);
   visit("pressure_kinetic", f.pressure_kinetic);
   visit("vorticity", f.vorticity);
+  visit("heat_flux_kinetic_x", f.heat_flux_kinetic_x);
+  visit("heat_flux_kinetic_y", f.heat_flux_kinetic_y);
 }
 
-// Streamwise averages over each row of cells (Figs 3.15–3.16): ρ(y) the row mean of ρ, and the
-// mass-weighted row means V_x(y), V_y(y), T(y) = Σ ρ T / Σ ρ.
+// Streamwise averages over each row of cells (Figs 3.15–3.16): ρ(y) the row mean of ρ, the
+// mass-weighted row means V_x(y), V_y(y), T(y) = Σ ρ T / Σ ρ, and the row means of the kinetic heat
+// flux (a flux per unit area, like ρ: each cell's own q^(k), about its own V(r)).
 struct StreamwiseProfiles {
-  std::vector<double> y, density, velocity_x, velocity_y, temperature;
+  std::vector<double> y, density, velocity_x, velocity_y, temperature, heat_flux_kinetic_x, heat_flux_kinetic_y;
 };
 StreamwiseProfiles streamwise_profiles(const CellFields& fields);
+// The mean over each row of cells of a per-cell field (index iy).
+std::vector<double> row_means(const FieldGrid& grid, const std::vector<double>& field);
 
 }  // namespace granule

@@ -1,13 +1,36 @@
-// The collisional stress field of thesis eq (1.6): in each cell, τ^(c) = σ/(V t) Σ J k̂ k̂ over the
-// collisions whose contact point lies in the cell during an interval of length t (V the cell
-// area).  Each collision moves momentum J k̂ across the contact over the distance σ (§1.4.3,
-// after Allen & Tildesley §16.4).  Summed over all cells this is exactly the global collisional
-// stress of the run's time series.
+// The collisional transfer fields of a run, accumulated from collision records per cell of the
+// coarse-graining grid (V the cell area, t the length of the averaging interval):
+//  • the collisional stress of thesis eq (1.6): τ^(c) = σ/(V t) Σ J k̂ k̂.  Each collision moves
+//    momentum J k̂ across the contact over the distance σ (§1.4.3, after Allen & Tildesley §16.4);
+//  • the collisional heat flux q^(c) = σ/(V t) Σ J k̂ [k̂·(c₁ + c₂)/2], c = v − V(r) the peculiar
+//    velocities of the pair before the collision: each collision moves the energy
+//    (ΔE₂ − ΔE₁)/2 = J k̂·(c₁ + c₂)/2 across the contact over σ k̂ (derivation below and in
+//    docs/macrostructure.md).
+// A collision belongs to the cell of its contact point.  Summed over all cells these are exactly
+// the global collisional stress and heat flux of the whole box.
+//
+// Derivation of q^(c) (unit mass; k̂ from disk 1 to disk 2, J k̂ the impulse on disk 2, so
+// c₂′ = c₂ + J k̂, c₁′ = c₁ − J k̂).  The peculiar kinetic energies change by
+//     ΔE₂ = J k̂·(c₂ + c₂′)/2,   ΔE₁ = −J k̂·(c₁ + c₁′)/2,
+// at r₂ = r₁ + σ k̂ and r₁.  Split the local change ΔE₁ δ(r − r₁) + ΔE₂ δ(r − r₂) into a source
+// (ΔE₁ + ΔE₂)/2 [δ(r − r₁) + δ(r − r₂)] — the collisional loss, −(1 − ẽ²)(k̂·v₂₁)²/4, shared by
+// the two disks — and (ΔE₂ − ΔE₁)/2 [δ(r − r₂) − δ(r − r₁)] = −∇·[(ΔE₂ − ΔE₁)/2 σ k̂ ∫₀¹ δ(r − r₁ − sσk̂) ds],
+// the divergence of a flux carried along the segment between the centres.  With momentum
+// conservation (c₁ + c₂ = c₁′ + c₂′), (ΔE₂ − ΔE₁)/2 = J k̂·(c₁ + c₂ + c₁′ + c₂′)/4 = J k̂·(c₁ + c₂)/2;
+// the same split of Δp₂ = J k̂, Δp₁ = −J k̂ gives (1.6) (Lun et al. 1984, J. Fluid Mech. 140, 223).
+//
+// The observer needs no image velocity U: it sums the pair's velocities in the frame of the
+// contact point's cell, s = (v₁ + v₂)/2 (lab velocities, a Lees–Edwards partner taken as the image
+// in that cell's frame), as E = Σ J k̂ (k̂·s).  Since k̂·(c₁ + c₂)/2 = k̂·s − k̂·V for a reference
+// velocity V of the cell, q^(c) = σ/(V t) E − τ^(c)·V is formed when the interval closes
+// (collisional_heat_flux), with the V of the caller's choosing (the interval's mean V(r)).
 #pragma once
 
 #include <vector>
 
+#include "analysis/cell_fields.hpp"
 #include "analysis/field_grid.hpp"
+#include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
 #include "engine/state_archive.hpp"
 
@@ -17,6 +40,7 @@ struct CollisionalStress {
   std::vector<double> xx, xy, yy;  // per cell
   std::vector<double> collisions;  // collisions per cell in the interval
   double interval = 0.0;           // t: length of the averaging interval
+  std::vector<double> energy_x, energy_y;  // σ/(V t) Σ J k̂ (k̂·s): the lab-frame energy transfer
 };
 
 class CollisionalStressField final : public EventObserver {
@@ -25,7 +49,7 @@ class CollisionalStressField final : public EventObserver {
   void on_collision(const CollisionRecord& record) override;
   // Start a new averaging interval at time t.
   void restart(double t);
-  // The stress (1.6) over the interval [start, t].
+  // The stress (1.6) and energy transfer over the interval [start, t].
   CollisionalStress stress(double t) const;
   double interval_start() const { return start_; }
   void save(StateArchive& archive, const std::string& prefix) const;
@@ -35,7 +59,28 @@ class CollisionalStressField final : public EventObserver {
   FieldGrid grid_;
   double diameter_;
   double start_ = 0.0;
-  std::vector<double> sum_xx_, sum_xy_, sum_yy_, count_;
+  CollisionalStress sums_;  // unscaled sums Σ J k̂k̂, Σ J k̂ (k̂·s) and counts of the open interval
 };
+
+// The velocity of the pair (v₁ + v₂)/2 before the collision, in the lab frame of the cell that
+// holds the record's contact point: disk 1's frame if the contact point lies on its side of the
+// box, else (a contact mapped across the Lees–Edwards boundary) disk 2's.  No U needed: the
+// relative velocity v₂₁ is the same in every frame.  `length_y` is the box height L_y.
+Vec2 pair_velocity_at_contact(const CollisionRecord& record, double diameter, double length_y);
+
+// q^(c) = σ/(V t) E − τ^(c)·V per cell, V = (reference_x, reference_y) the lab velocity the
+// peculiar velocities are taken from in each cell (normally the interval's mean V(r)).
+struct HeatFlux {
+  std::vector<double> x, y;
+};
+HeatFlux collisional_heat_flux(const CollisionalStress& stress, const std::vector<double>& reference_x,
+                               const std::vector<double>& reference_y);
+// The same about the interval's mean velocity V(r) of `average` (the cell fields of the same
+// interval and grid).  When those were measured relative to the mean flow u(y) (`frame`'s U at the
+// interval's end), the reference is V(r) + u(y) at the cell's centre: the collisional flux is then
+// taken about u at the centre of the cell rather than at each contact point (the difference,
+// γ Σ J k̂ k̂_x (y_contact − y_centre), has zero mean when contacts fill the cell evenly).
+HeatFlux collisional_heat_flux(const CollisionalStress& stress, const CellFields& average, const ShearFrame& frame,
+                               bool shear_profile_subtracted);
 
 }  // namespace granule

@@ -83,7 +83,9 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   const auto start = std::chrono::steady_clock::now();
   while (sim.collisions() < target) {
     sim.run(std::numeric_limits<double>::infinity(), std::min<std::int64_t>(target, sim.collisions() + p.particles));
-    if (at_least(Measurements::kDiagnostics)) diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity());
+    if (at_least(Measurements::kDiagnostics)) {
+      diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
+    }
     if (at_least(Measurements::kImpacts)) density.update(sim.state());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -186,6 +186,7 @@ void RunMeasurements::write_fields_frame(const Simulation& sim) {
   frame.instant = fields_from_moments(instant, frame_, sim.shear_offset(), subtract);
   frame.average = fields_from_moments(*interval_moments_, frame_, sim.shear_offset(), subtract);
   frame.collisional = collisional_->stress(sim.time());
+  frame.heat_flux_collisional = collisional_heat_flux(*frame.collisional, frame.average, frame_, subtract);
   fields_writer_->append(frame);
   last_fields_collisions_ = sim.collisions();
   interval_moments_ = std::make_unique<CellMoments>(grid_);

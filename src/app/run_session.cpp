@@ -76,7 +76,8 @@ void RunSession::start_production() {
   diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
-  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity()));
+  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
+                                          sim_->shear_offset()));
   snapshots_ = std::make_unique<SnapshotWriter>(
       out_ + "/snapshots.h5", SnapshotMetadata{system, config_.area_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
                                                config_.seed, kVersion});
@@ -157,7 +158,8 @@ void RunSession::append_snapshot() {
 
 void RunSession::take_sample() {
   const ParticleState state = sim_->state();
-  samples_.push_back(diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity()));
+  samples_.push_back(
+      diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity(), sim_->shear_offset()));
   measurements_->on_sample(state, sim_->collisions(), sim_->image_velocity());
 }
 

@@ -44,6 +44,12 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, cons
   j["snapshots"] = facts.snapshots;
   j["engine_cells"] = {grid.nx, grid.ny};
   j["bytes_per_particle"] = sim.bytes_per_particle();
+  if (!samples.empty()) {
+    // The Chapter 4 flow measures of the last sample (docs/macrostructure.md).
+    nlohmann::json flow = {{"c", samples.back().c}};
+    for_each_flow_measure(samples.back().flow, [&](const char* name, double value) { flow[name] = value; });
+    j["flow_classification"] = flow;
+  }
   if (config.lees_edwards && !samples.empty()) {
     // Steady-shear temperature: measured T̄ (mean over the second half of the samples) beside
     // the thesis's fit (3.1) and the Jenkins–Richman dilute law (3.2).

@@ -1,5 +1,6 @@
 #include "io/fields_file.hpp"
 
+#include <array>
 #include <stdexcept>
 
 #include "io/hdf5_util.hpp"
@@ -13,13 +14,30 @@ namespace {
 constexpr const char* kFormat = "granule-fields";
 constexpr int kFormatVersion = 1;
 
-// The collisional and total stress datasets of the interval average, in one list.
+// The collisional and total stress and heat flux datasets of the interval average, in one list.
 template <typename Visit>
 void for_each_stress(Visit&& visit) {
-  for (const char* name : {"collisional_xx", "collisional_xy", "collisional_yy", "pressure_collisional",
-                           "collisions", "total_xx", "total_xy", "total_yy", "pressure_total"}) {
+  for (const char* name : {"collisional_xx", "collisional_xy", "collisional_yy", "pressure_collisional", "collisions",
+                           "total_xx", "total_xy", "total_yy", "pressure_total", "heat_flux_collisional_x",
+                           "heat_flux_collisional_y", "heat_flux_total_x", "heat_flux_total_y"}) {
     visit(name);
   }
+}
+
+// Streamwise profiles of the interval-averaged heat flux (runs only), in one list.
+constexpr std::array<const char*, 4> kAverageFluxProfiles{
+    "/profiles/average_heat_flux_collisional_x", "/profiles/average_heat_flux_collisional_y",
+    "/profiles/average_heat_flux_total_x", "/profiles/average_heat_flux_total_y"};
+
+// The streamwise profiles of the instantaneous fields, in one list.
+template <typename Profiles, typename Visit>
+void for_each_profile(Profiles& p, Visit&& visit) {
+  visit("/profiles/density", p.density);
+  visit("/profiles/velocity_x", p.velocity_x);
+  visit("/profiles/velocity_y", p.velocity_y);
+  visit("/profiles/temperature", p.temperature);
+  visit("/profiles/heat_flux_kinetic_x", p.heat_flux_kinetic_x);
+  visit("/profiles/heat_flux_kinetic_y", p.heat_flux_kinetic_y);
 }
 
 // The frame scalars, in one list.
@@ -65,8 +83,10 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   std::vector<double> y;
   for (int iy = 0; iy < grid.ny; ++iy) y.push_back(grid.center_y(iy));
   write_dataset(f, "/profiles/y", rows, y);
-  for (const char* name : {"density", "velocity_x", "velocity_y", "temperature"}) {
-    add_frames(f, (std::string("/profiles/") + name).c_str(), H5T_NATIVE_DOUBLE, rows);
+  StreamwiseProfiles profiles;
+  for_each_profile(profiles, [&](const char* name, std::vector<double>&) { add_frames(f, name, H5T_NATIVE_DOUBLE, rows); });
+  if (with_collisional_) {
+    for (const char* name : kAverageFluxProfiles) add_frames(f, name, H5T_NATIVE_DOUBLE, rows);
   }
   file_.flush();
 }
@@ -90,29 +110,37 @@ void FieldsWriter::append(const FieldsFrame& frame) {
     append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
   });
   if (with_collisional_) {
-    if (!frame.collisional) throw std::logic_error("fields frame without the collisional stress");
+    if (!frame.collisional || !frame.heat_flux_collisional) {
+      throw std::logic_error("fields frame without the collisional stress and heat flux");
+    }
     const CollisionalStress& c = *frame.collisional;
+    const HeatFlux& qc = *frame.heat_flux_collisional;
     const CellFields& k = frame.average;
     const std::size_t n = grid_.cells();
-    std::vector<double> pc(n), txx(n), txy(n), tyy(n), pt(n);
+    std::vector<double> pc(n), txx(n), txy(n), tyy(n), pt(n), qx(n), qy(n);
     for (std::size_t i = 0; i < n; ++i) {
       pc[i] = 0.5 * (c.xx[i] + c.yy[i]);
       txx[i] = k.kinetic_xx[i] + c.xx[i];  // total stress (1.7)
       txy[i] = k.kinetic_xy[i] + c.xy[i];
       tyy[i] = k.kinetic_yy[i] + c.yy[i];
       pt[i] = 0.5 * (txx[i] + tyy[i]);
+      qx[i] = k.heat_flux_kinetic_x[i] + qc.x[i];  // total heat flux q^(k) + q^(c)
+      qy[i] = k.heat_flux_kinetic_y[i] + qc.y[i];
     }
-    const std::vector<const std::vector<double>*> data{&c.xx, &c.xy, &c.yy, &pc, &c.collisions, &txx, &txy, &tyy, &pt};
+    const std::vector<const std::vector<double>*> data{&c.xx, &c.xy, &c.yy, &pc, &c.collisions, &txx, &txy,
+                                                       &tyy, &pt,   &qc.x, &qc.y, &qx,           &qy};
     std::size_t next = 0;
     for_each_stress([&](const char* name) {
       append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, data[next++]->data(), at);
     });
+    const std::array<std::vector<double>, 4> flux_profiles{row_means(grid_, qc.x), row_means(grid_, qc.y),
+                                                           row_means(grid_, qx), row_means(grid_, qy)};
+    for (std::size_t i = 0; i < flux_profiles.size(); ++i) {
+      append_frame(f, kAverageFluxProfiles[i], H5T_NATIVE_DOUBLE, flux_profiles[i].data(), at);
+    }
   }
   const StreamwiseProfiles p = streamwise_profiles(frame.instant);
-  const std::vector<std::pair<const char*, const std::vector<double>*>> profiles{
-      {"/profiles/density", &p.density}, {"/profiles/velocity_x", &p.velocity_x},
-      {"/profiles/velocity_y", &p.velocity_y}, {"/profiles/temperature", &p.temperature}};
-  for (const auto& [name, v] : profiles) append_frame(f, name, H5T_NATIVE_DOUBLE, v->data(), at);
+  for_each_profile(p, [&](const char* name, const std::vector<double>& v) { append_frame(f, name, H5T_NATIVE_DOUBLE, v.data(), at); });
   file_.end_frame();
 }
 

@@ -1,7 +1,7 @@
 // HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
 // instantaneous fields of the configuration, the fields averaged over the interval since the
-// previous frame (with the collisional stress (1.6) when collisions were observed), and the
-// streamwise profiles.  Written to `<name>.partial`, renamed by finish(); every failure throws
+// previous frame (with the collisional stress (1.6) and heat flux when collisions were observed),
+// and the streamwise profiles.  Written to `<name>.partial`, renamed by finish(); every failure throws
 // IoError and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
@@ -30,6 +30,7 @@ struct FieldsFrame {
   CellFields instant;
   CellFields average;
   std::optional<CollisionalStress> collisional;  // only when collisions were observed
+  std::optional<HeatFlux> heat_flux_collisional;  // q^(c) about the average's V(r), with `collisional`
 };
 
 class FieldsWriter {

@@ -44,7 +44,7 @@ CellFields GlobalDiagnostics::cell_fields(const ParticleState& state, bool subtr
 }
 
 DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions,
-                                            double shear_velocity) {
+                                            double shear_velocity, double shear_offset) {
   frame_.shear_velocity = shear_velocity;  // u(y) of the images' velocity now (shear protocols)
   const std::size_t n = state.size();
   const double nd = static_cast<double>(n);
@@ -100,6 +100,11 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
     out.shear_stress_collisional = params_.diameter * impulse_xy_sum_ / (area * dt);
     out.collision_rate = static_cast<double>(collisions - interval_collisions_) / nd / dt;
   }
+  // The Chapter 4 flow measures, with ρ(y) and V_x(y) on the rows of the coarse-graining grid.
+  FlowClassificationSettings classification;
+  classification.rows = grid_.ny;
+  out.flow = classify_flow(state, {params_.length_x, params_.length_y, shear_velocity}, shear_offset, params_.diameter,
+                           classification);
   restart_interval(t, collisions);
   return out;
 }

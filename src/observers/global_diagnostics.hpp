@@ -2,14 +2,16 @@
 // the granular temperature T̄ (mean of cell temperatures, eq 1.3, with velocities relative to the
 // imposed shear profile; the thesis's plain cell definition beside it), the global fluctuation
 // temperature, flatness κ (1.8), two asymmetry measures, kinetic and collisional pressures
-// (half traces of 1.4 and 1.6) and the collision rate.  Collisional quantities are accumulated
-// from every collision record over the sampling interval.
+// (half traces of 1.4 and 1.6), the collision rate, and the scalars that classify the flow states
+// of Chapter 4 (analysis/flow_classification.hpp).  Collisional quantities are accumulated from
+// every collision record over the sampling interval.
 #pragma once
 
 #include <cstdint>
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/field_grid.hpp"
+#include "analysis/flow_classification.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
 #include "engine/state_archive.hpp"
@@ -33,6 +35,7 @@ struct DiagnosticsSample {
   double shear_stress_collisional = 0.0;  // xy component of (1.6) over the interval
   double shear_stress_kinetic = 0.0;      // xy component of (1.4), whole box
   double collision_rate = 0.0;        // Δc / Δt over the interval
+  FlowClassification flow;            // density contrast, densest band, V_x(y) deviation, largest cluster
 };
 
 // The columns of the time series, in their order (timeseries.csv, checkpoints).
@@ -53,6 +56,7 @@ void for_each_column(Sample& s, Visit&& visit) {
   visit("shear_stress_kinetic", s.shear_stress_kinetic);
   visit("shear_stress_collisional", s.shear_stress_collisional);
   visit("collision_rate", s.collision_rate);
+  for_each_flow_measure(s.flow, visit);
 }
 
 class GlobalDiagnostics final : public EventObserver {
@@ -61,9 +65,11 @@ class GlobalDiagnostics final : public EventObserver {
   GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y);
 
   void on_collision(const CollisionRecord& record) override;
-  // Measure the configuration `state` at time t (collisions since production started), when the
-  // images move at `shear_velocity`, and close the current interval.
-  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions, double shear_velocity);
+  // Measure the configuration `state` at time t (collisions since production started) and
+  // close the current interval.  `shear_velocity` and `shear_offset` are the image velocity U and
+  // offset Δ at time t (they change with time under a shear protocol).
+  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions, double shear_velocity,
+                           double shear_offset);
   // Forget the open interval's collisions (e.g. after the elastic pre-run).
   void restart_interval(double t, std::int64_t collisions);
   // The open interval (a checkpoint).

@@ -16,6 +16,7 @@ result = granule("run", "--out", str(out), "--set", f"system.particles={N}", "--
                  "--set", "boundary.kind=\"lees-edwards\"", "--set", "boundary.shear_velocity=10",
                  "--set", "initial.equilibrate=2", "--set", "run.until_collisions_per_particle=8",
                  "--set", "output.snapshot_every_collisions_per_particle=2", "--set", "fields.cells=[6, 8]",
+                 "--set", "diagnostics.cells=[6, 8]",
                  "--set", "collisions.density_windows=[[0, 1500], [1500, 1e9]]",
                  "--set", "collisions.from_collisions_per_particle=1", "--set", "collisions.free_paths=true")
 check(result.returncode == 0, f"run failed: {result.stderr}")
@@ -40,6 +41,67 @@ with h5py.File(out / "fields.h5") as f, h5py.File(out / "snapshots.h5") as snaps
     check(abs(slope / 10.0 - 1.0) < 0.25, f"V_x(y) slope {slope} against γ = 10")
     instant_density = f["instant/density"][:]
     instant_temperature = f["instant/temperature"][:]
+
+    # Heat flux (docs/macrostructure.md): q^(k) of each cell recomputed here from the snapshots,
+    # q = q^(k) + q^(c), and the profiles are row means.
+    area = f.attrs["length_x"] * f.attrs["length_y"] / 48
+    for k in (1, 4):
+        xy, v = snaps["positions"][k], snaps["velocities"][k]
+        ix = np.minimum((xy[:, 0] / f.attrs["length_x"] * 6).astype(int), 5)
+        iy = np.minimum((xy[:, 1] / f.attrs["length_y"] * 8).astype(int), 7)
+        q = np.zeros((8, 6, 2))
+        for cy in range(8):
+            for cx in range(6):
+                vc = v[(ix == cx) & (iy == cy)]
+                c_pec = vc - vc.mean(axis=0)
+                q[cy, cx] = (0.5 * (c_pec ** 2).sum(axis=1)[:, None] * c_pec).sum(axis=0) / area
+        check(np.allclose(f["instant/heat_flux_kinetic_x"][k], q[:, :, 0], rtol=1e-8, atol=1e-9), f"frame {k}: q^(k)_x")
+        check(np.allclose(f["instant/heat_flux_kinetic_y"][k], q[:, :, 1], rtol=1e-8, atol=1e-9), f"frame {k}: q^(k)_y")
+        check(np.allclose(f["profiles/heat_flux_kinetic_y"][k], q[:, :, 1].mean(axis=1), rtol=1e-8, atol=1e-9),
+              f"frame {k}: q^(k)_y(y) profile")
+    for axis in ("x", "y"):
+        qc = f[f"average/heat_flux_collisional_{axis}"][1:]
+        check(np.abs(qc).sum() > 0, f"collisional heat flux {axis} present")
+        check(np.allclose(f[f"average/heat_flux_total_{axis}"][1:], f[f"average/heat_flux_kinetic_{axis}"][1:] + qc),
+              f"total heat flux {axis}")
+        check(np.allclose(f[f"profiles/average_heat_flux_total_{axis}"][1:], f[f"average/heat_flux_total_{axis}"][1:].mean(axis=2)),
+              f"average total heat flux profile {axis}")
+    last_xy, last_v, last_offset = snaps["positions"][-1], snaps["velocities"][-1], snaps["shear_offset"][-1]
+    lx, ly, sigma = f.attrs["length_x"], f.attrs["length_y"], f.attrs["diameter"]
+
+# The flow measures of the last sample (timeseries.csv and summary.json, at the last snapshot),
+# recomputed from the snapshot: 8 rows, band L_y/5, clusters at 1.1 σ by brute force with Δ.
+counts = np.bincount(np.minimum((last_xy[:, 1] / ly * 8).astype(int), 7), minlength=8)
+row_vx = np.bincount(np.minimum((last_xy[:, 1] / ly * 8).astype(int), 7), weights=last_v[:, 0], minlength=8) / counts
+centres = (np.arange(8) + 0.5) * ly / 8
+ys = np.sort(last_xy[:, 1])
+band = max(((ys - y0) % ly < ly / 5).sum() for y0 in ys) / N
+dx = last_xy[:, 0][None, :] - last_xy[:, 0][:, None]
+dy = last_xy[:, 1][None, :] - last_xy[:, 1][:, None]
+linked = np.zeros((N, N), bool)
+for image in (-1, 0, 1):
+    sx = dx + image * last_offset
+    sx -= lx * np.round(sx / lx)
+    linked |= np.hypot(sx, dy + image * ly) < 1.1 * sigma
+labels = np.arange(N)
+while True:
+    relaxed = np.where(linked, labels[None, :], N).min(axis=1)
+    relaxed = np.minimum(relaxed, labels)
+    if (relaxed == labels).all():
+        break
+    labels = relaxed
+expected = {"density_contrast": (counts.max() - counts.min()) / counts.mean(),
+            "density_rms_deviation": np.sqrt(((counts / counts.mean() - 1) ** 2).mean()),
+            "densest_band_mass_fraction": band,
+            "velocity_profile_deviation": np.sqrt(((row_vx - 10.0 * (centres - ly / 2) / ly) ** 2).mean()) / 10.0,
+            "largest_cluster_mass_fraction": np.bincount(labels).max() / N}
+last_row = list(csv.DictReader(open(out / "timeseries.csv")))[-1]
+flow = json.load(open(out / "summary.json"))["flow_classification"]
+check(abs(flow["c"] - 8.0) < 1e-9 and abs(float(last_row["c"]) - 8.0) < 1e-9, "last sample at the last snapshot")
+for name, value in expected.items():
+    check(abs(float(last_row[name]) - value) < 1e-9 * max(1.0, abs(value)), f"timeseries {name}: {last_row[name]} vs {value}")
+    check(abs(flow[name] - value) < 1e-9 * max(1.0, abs(value)), f"summary {name}: {flow[name]} vs {value}")
+print("flow measures at c = 8 (N = 1500, U = 10, ẽ = 0.9):", {k: round(float(v), 4) for k, v in expected.items()})
 
 # The same fields from the snapshots, computed afterwards, equal the ones measured during the run.
 result = granule("analyze", "fields", str(out / "snapshots.h5"), "--cells", "6,8", "--out", str(WORK / "fs.h5"))

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "engine/system_params.hpp"
+#include "init/random.hpp"
 
 namespace granule {
 
@@ -17,6 +18,17 @@ inline ParticleState particles_from_rows(std::initializer_list<std::array<double
     p.vy.push_back(r[3]);
   }
   return p;
+}
+
+// n disks placed uniformly at random in an L_x × L_y box, at rest.
+inline ParticleState uniform_positions(Random& random, std::size_t n, double length_x, double length_y) {
+  ParticleState s;
+  s.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = length_x * random.uniform();
+    s.y[i] = length_y * random.uniform();
+  }
+  return s;
 }
 
 }  // namespace granule

@@ -211,6 +211,7 @@ FieldsFrame fields_frame(const FieldGrid& grid, int label) {
   }
   f.collisional = CollisionalStress{std::vector<double>(grid.cells(), label), std::vector<double>(grid.cells(), 0.0),
                                     std::vector<double>(grid.cells(), label), std::vector<double>(grid.cells(), 1.0), 1.0};
+  f.heat_flux_collisional = HeatFlux{std::vector<double>(grid.cells(), -label), std::vector<double>(grid.cells(), 2.0 * label)};
   return f;
 }
 
@@ -226,6 +227,9 @@ TEST(FieldsFile, ResumesACrashedRunFromItsFirstFrames) {
   FieldsFrame without_stress = fields_frame(grid, 30);
   without_stress.collisional.reset();
   EXPECT_THROW(resumed.append(without_stress), std::logic_error) << "the file's collisional stress was forgotten";
+  FieldsFrame without_heat_flux = fields_frame(grid, 31);
+  without_heat_flux.heat_flux_collisional.reset();
+  EXPECT_THROW(resumed.append(without_heat_flux), std::logic_error) << "the file's collisional heat flux was forgotten";
   resumed.append(fields_frame(grid, 13));
   resumed.append(fields_frame(grid, 14));
   resumed.finish();

@@ -103,7 +103,7 @@ struct EquilibriumRun {
     double energy = 0.0;
     for (std::size_t i = 0; i < state.size(); ++i) energy += 0.5 * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
     temperature = energy / static_cast<double>(state.size());  // elastic, no mean flow: T = ½⟨v²⟩ exactly
-    pressure_collisional_global = diagnostics.sample(state, sim.time(), sim.collisions(), sim.image_velocity()).pressure_collisional;
+    pressure_collisional_global = diagnostics.sample(state, sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset()).pressure_collisional;
     collisional = stress.stress(sim.time());
     averaged = fields_from_moments(moments, frame, 0.0, false);
     impact_counts = impacts.total();

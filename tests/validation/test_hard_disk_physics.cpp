@@ -39,7 +39,7 @@ TEST_P(ElasticEquilibrium, PressureCollisionRateAndFlatness) {
   constexpr int kSamples = 50;
   for (int k = 1; k <= kSamples; ++k) {
     sim.run(kInf, start + collisions_for(p, k));
-    const DiagnosticsSample s = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity());
+    const DiagnosticsSample s = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
     pc_weighted += s.pressure_collisional * (s.t - t_prev);
     t_prev = s.t;
     pk_sum += s.pressure_kinetic;
@@ -109,7 +109,7 @@ TEST(FreeCooling, LogTemperatureSlopePerCollision) {
   std::vector<double> c, log_t;
   for (int k = 1; k <= 10; ++k) {
     sim.run(kInf, collisions_for(p, 0.5 * k));
-    const DiagnosticsSample s = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity());
+    const DiagnosticsSample s = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
     c.push_back(s.c);
     log_t.push_back(std::log(s.temperature_global));
   }
@@ -152,7 +152,7 @@ TEST(LeesEdwards, LinearProfileAndSteadyTemperature) {
       sum[bin] += s.vx[i];
       count[bin] += 1.0;
     }
-    temperature += diagnostics.sample(s, sim.time(), sim.collisions(), sim.image_velocity()).temperature / kSamples;
+    temperature += diagnostics.sample(s, sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset()).temperature / kSamples;
   }
   double sy = 0.0, sv = 0.0, syy = 0.0, syv = 0.0;
   for (int b = 0; b < kBins; ++b) {

@@ -37,7 +37,7 @@ TEST(ShearTemperature, ExactLinearShearHasNoTemperature) {
     }
   }
   GlobalDiagnostics diagnostics(p, n, n);
-  const DiagnosticsSample d = diagnostics.sample(s, 1.0, 0, p.shear_velocity);
+  const DiagnosticsSample d = diagnostics.sample(s, 1.0, 0, p.shear_velocity, 0.0);
   const double h = 1.0 / n, gamma = frame.shear_rate();
   EXPECT_NEAR(d.temperature, 0.0, 1e-24);
   EXPECT_NEAR(d.temperature_global, 0.0, 1e-24);
@@ -52,7 +52,7 @@ TEST(ShearTemperature, PeriodicColumnsAreEqual) {
   GlobalDiagnostics diagnostics(p, 7, 7);
   for (int c = 1; c <= 5; ++c) {
     sim.run(kInf, collisions_for(p, c));
-    const DiagnosticsSample d = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity());
+    const DiagnosticsSample d = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
     EXPECT_EQ(d.temperature, d.temperature_thesis_cells) << "c = " << c;
   }
 }
@@ -126,7 +126,7 @@ TEST(ShearTemperature, ProfileSubtractedTemperatureIsTheGlobalOneMinusCellVeloci
     sim.run(kInf, collisions_for(p, 30.0 + k));
     const ParticleState s = sim.state();
     for (std::size_t g = 0; g < std::size(grids); ++g) {
-      const DiagnosticsSample d = diagnostics[g].sample(s, sim.time(), sim.collisions(), sim.image_velocity());
+      const DiagnosticsSample d = diagnostics[g].sample(s, sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
       if (g == 0) global.push_back(d.temperature_global);
       Series& out = series[g];
       out.honest.push_back(d.temperature);
