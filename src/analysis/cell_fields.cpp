@@ -128,6 +128,7 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
 namespace granule {
 
 std::vector<double> row_means(const FieldGrid& g, const std::vector<double>& field) {
+  if (field.empty()) return {};  // a field the caller did not fill (e.g. read from an older file)
   std::vector<double> means(static_cast<std::size_t>(g.ny), 0.0);
   for (std::size_t c = 0; c < g.cells(); ++c) means[c / static_cast<std::size_t>(g.nx)] += field[c];
   for (double& v : means) v /= g.nx;

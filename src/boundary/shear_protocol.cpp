@@ -40,25 +40,21 @@ double ShearProtocol::base_velocity(double t) const {
 double ShearProtocol::base_integral(double a, double b) const {
   const auto& points = history_.schedule;
   if (!points.empty()) {
-    // ∫ of the piecewise-linear U, piece by piece (steps have zero width and add nothing).
-    const auto antiderivative = [&](double t) {
-      const ShearSchedulePoint& first = points.front();
-      if (t <= first.time) return first.velocity * (t - first.time);
-      double sum = 0.0;
-      for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-        const ShearSchedulePoint& p = points[k];
-        const ShearSchedulePoint& q = points[k + 1];
-        if (t >= q.time) {
-          sum += 0.5 * (q.time - p.time) * (p.velocity + q.velocity);
-        } else if (t > p.time) {
-          const double u = t - p.time;
-          const double slope = (q.velocity - p.velocity) / (q.time - p.time);
-          return sum + u * (p.velocity + 0.5 * slope * u);
-        }
-      }
-      return sum + points.back().velocity * (t - points.back().time);
+    // The trapezoid rule is exact on each linear piece; summed over the parts of [a, b] in each
+    // piece (never as a difference of antiderivatives, which would cancel on short segments).
+    double sum = 0.0;
+    const auto add = [&](double from, double to, const ShearSchedulePoint& p, const ShearSchedulePoint& q) {
+      const double u = std::max(a, from), w = std::min(b, to);
+      if (!(w > u)) return;
+      const auto at = [&](double t) {
+        return q.time > p.time ? p.velocity + (q.velocity - p.velocity) * ((t - p.time) / (q.time - p.time)) : p.velocity;
+      };
+      sum += 0.5 * (w - u) * (at(u) + at(w));
     };
-    return antiderivative(b) - antiderivative(a);
+    add(-kInf, points.front().time, points.front(), points.front());
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) add(points[k].time, points[k + 1].time, points[k], points[k + 1]);
+    add(points.back().time, kInf, points.back(), points.back());
+    return sum;
   }
   const double tau = history_.ramp_time;
   if (tau > 0.0) {
@@ -85,8 +81,9 @@ double ShearProtocol::integral(double a, double b) const {
     const double u = std::max(a, osc->start);
     const double w = std::min(b, osc->end());
     if (w > u) {
+      // A/k (cos φ(u) − cos φ(w)) as a product of sines: no cancellation on short segments.
       const double k = 2.0 * std::numbers::pi / osc->period;
-      sum += osc->amplitude / k * (std::cos(k * (u - osc->start)) - std::cos(k * (w - osc->start)));
+      sum += 2.0 * osc->amplitude / k * std::sin(0.5 * k * (u + w - 2.0 * osc->start)) * std::sin(0.5 * k * (w - u));
     }
   }
   return sum;
@@ -144,7 +141,12 @@ ShearSegment ShearProtocol::segment_from(double t) const {
   const double limit = next_break(t);
   const double slope = slope_bound(t);
   double end = limit;
-  if (slope > 0.0) end = std::min(limit, t + history_.tolerance * velocity_scale() / slope);
+  if (slope > 0.0) {
+    // Equal segments up to the next break, none longer than the tolerance allows: no slivers.
+    const double longest = history_.tolerance * velocity_scale() / slope;
+    end = limit == kInf ? t + longest : t + (limit - t) / std::ceil((limit - t) / longest);
+    if (end > limit) end = limit;
+  }
   if (end <= t) end = std::min(limit, std::nextafter(t, kInf));  // always move on
   if (end == kInf) return {t, kInf, velocity(t)};
   return {t, end, integral(t, end) / (end - t)};

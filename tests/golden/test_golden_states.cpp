@@ -39,6 +39,7 @@ struct GoldenCase {
   double area_fraction, restitution, shear_velocity, tc_duration, collisions_per_particle;
   std::uint64_t seed;
   std::uint64_t expected;
+  bool protocol = false;  // a ramp with a sinusoidal kick (thesis §4.3) from production on
 };
 
 class GoldenState : public ::testing::TestWithParam<GoldenCase> {};
@@ -51,6 +52,10 @@ TEST_P(GoldenState, FinalStateHashIsUnchanged) {
   p.restitution = 1.0;
   p.shear_velocity = k.shear_velocity;
   p.tc_duration = k.tc_duration;
+  if (k.protocol) {
+    p.shear_history.ramp_time = 0.05;
+    p.shear_history.oscillation = ShearOscillation{0.3 * k.shear_velocity, 0.02, 0.05, 5.0};
+  }
   const auto grid = choose_cell_grid({1.0, 1.0, p.diameter, p.particles, k.shear_velocity != 0.0, 1.0, std::nullopt});
   ASSERT_TRUE(grid.grid) << grid.error;
   const auto init = make_initial_state(p, 1.0, k.seed, Placement::kAuto);
@@ -74,7 +79,8 @@ INSTANTIATE_TEST_SUITE_P(
     Runs, GoldenState,
     ::testing::Values(GoldenCase{"free_cooling_tc", 2000, 0.05, 0.6, 0.0, 1e-7, 40.0, 1995, 0xc9cafc2d41d8f34aULL},
                       GoldenCase{"lees_edwards_tc", 1500, 0.2, 0.8, 30.0, 1e-6, 40.0, 7, 0x9c0594198fa76636ULL},
-                      GoldenCase{"dense_elastic", 1200, 0.6, 1.0, 0.0, 0.0, 30.0, 3, 0x006a8c03080541f2ULL}),
+                      GoldenCase{"dense_elastic", 1200, 0.6, 1.0, 0.0, 0.0, 30.0, 3, 0x006a8c03080541f2ULL},
+                      GoldenCase{"lees_edwards_protocol", 1500, 0.1, 0.7, 20.0, 1e-6, 40.0, 12, 0x2cace463719adda4ULL, true}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace

@@ -4,6 +4,9 @@
 //     when the partner is a Lees–Edwards image moving at v + i_y U, the lab energy also changes
 //     by −i_y U J k̂_x (J the impulse on the partner): the shear work that heats a sheared gas;
 //   • a disk crossing the top (bottom) of a Lees–Edwards box changes v_x by −U (+U) (§1.4.2).
+// Under a shear protocol (thesis §4.3) U is the image velocity at that moment, so the budget holds
+// exactly in any protocol: the change of kinetic energy is the work done across the boundary
+// minus the collisional losses.
 // The budget is summed from the collision records with the formulas above, written here
 // independently of the engine's collision rule, and compared with the state's own totals.
 #include <gtest/gtest.h>
@@ -16,20 +19,22 @@ namespace granule {
 namespace {
 
 struct Budget final : EventObserver {
-  double shear_velocity = 0.0;
+  const Simulation* sim = nullptr;  // U at the moment of each crossing: sim->image_velocity()
   double energy = 0.0, momentum_x = 0.0, magnitude = 0.0;  // predicted changes; Σ|terms| for round-off
-  std::int64_t collisions = 0, crossings = 0, wrong_crossing_shifts = 0;
+  std::int64_t collisions = 0, crossings = 0, wrong_crossing_shifts = 0, wrong_image_velocities = 0;
   void on_collision(const CollisionRecord& r) override {
     const double vn = r.relative_velocity.x * r.contact_normal.x + r.relative_velocity.y * r.contact_normal.y;
     const double e = r.restitution;
     const double impulse = 0.5 * (1.0 + e) * vn;  // on disk 2, along k̂
     const double loss = 0.25 * (1.0 - e * e) * vn * vn;
-    const double shear_work = -r.image_y * shear_velocity * impulse * r.contact_normal.x;
+    const double shear_work = -r.image_velocity_x * impulse * r.contact_normal.x;
+    if (r.image_velocity_x != r.image_y * sim->image_velocity()) ++wrong_image_velocities;
     energy += -loss + shear_work;
     magnitude += loss + std::abs(shear_work);
     ++collisions;
   }
   void on_boundary_crossing(const BoundaryCrossingRecord& r) override {
+    const double shear_velocity = sim->image_velocity();
     if (r.velocity_x_after - r.velocity_x_before != -r.direction * shear_velocity) {
       // Exact in floating point only when v_x and U are of one magnitude; allow round-off.
       const double expected = r.velocity_x_before - r.direction * shear_velocity;
@@ -61,7 +66,21 @@ Totals totals(const ParticleState& s) {
 
 struct BudgetCase {
   double area_fraction, restitution, shear_velocity, tc_duration;
+  ShearHistory history = {};
 };
+
+ShearHistory ramp_and_kick() {
+  ShearHistory h;
+  h.ramp_time = 0.05;
+  h.oscillation = ShearOscillation{2.0, 0.03, 0.02, 4.0};
+  return h;
+}
+
+ShearHistory steps_through_zero() {
+  ShearHistory h;
+  h.schedule = {{0.0, 0.0}, {0.02, 0.0}, {0.02, 6.0}, {0.06, -6.0}, {0.06, 3.0}};
+  return h;
+}
 
 class ExactBudget : public ::testing::TestWithParam<BudgetCase> {};
 
@@ -69,9 +88,11 @@ TEST_P(ExactBudget, MomentumAndEnergyChangeOnlyAsThePhysicsSays) {
   const BudgetCase k = GetParam();
   SystemParams p = make_system(500, k.area_fraction, k.restitution, k.shear_velocity);
   p.tc_duration = k.tc_duration;
+  p.shear_history = k.history;
   Simulation sim = make_simulation(p, 41);
+  sim.start_production(k.restitution);  // the protocol runs from here
   Budget budget;
-  budget.shear_velocity = k.shear_velocity;
+  budget.sim = &sim;
   sim.add_observer(&budget);
   const Totals before = totals(sim.state());
   sim.run(kInf, collisions_for(p, 40.0));
@@ -85,6 +106,7 @@ TEST_P(ExactBudget, MomentumAndEnergyChangeOnlyAsThePhysicsSays) {
               static_cast<long long>(budget.crossings), before.energy, after.energy, energy_residual, momentum_residual,
               (after.py - before.py) / (before.scale + after.scale));
   EXPECT_EQ(budget.wrong_crossing_shifts, 0);
+  EXPECT_EQ(budget.wrong_image_velocities, 0);
   EXPECT_LT(std::abs(energy_residual), 1e-12);
   EXPECT_LT(std::abs(momentum_residual), 1e-13);
   EXPECT_LT(std::abs(after.py - before.py) / (before.scale + after.scale), 1e-13);
@@ -95,7 +117,9 @@ TEST_P(ExactBudget, MomentumAndEnergyChangeOnlyAsThePhysicsSays) {
 
 INSTANTIATE_TEST_SUITE_P(Boxes, ExactBudget,
                          ::testing::Values(BudgetCase{0.3, 0.8, 0.0, 0.0}, BudgetCase{0.3, 0.8, 4.0, 1e-5},
-                                           BudgetCase{0.05, 0.6, 10.0, 1e-6}, BudgetCase{0.5, 1.0, -3.0, 0.0}));
+                                           BudgetCase{0.05, 0.6, 10.0, 1e-6}, BudgetCase{0.5, 1.0, -3.0, 0.0},
+                                           BudgetCase{0.2, 0.7, 6.0, 1e-6, ramp_and_kick()},
+                                           BudgetCase{0.2, 1.0, 3.0, 0.0, steps_through_zero()}));
 
 }  // namespace
 }  // namespace granule

@@ -2,7 +2,9 @@
 // run() anywhere, reading the state, attaching observers, or saving the engine and continuing in
 // a new one restored from the checkpoint changes no bit.  Checked under Lees–Edwards with the TC
 // model over ≥ 30 collisions per particle and ≥ 100 N events, so that every periodic action
-// (clock re-base every 16 N events, grid realignment) happens many times on the way.
+// (clock re-base every 16 N events, grid realignment) happens many times on the way; once with a
+// constant drive and once under a shear protocol (a ramp with a sinusoidal kick, thesis §4.3),
+// whose changes of U are global actions too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,11 +15,26 @@
 namespace granule {
 namespace {
 
-SystemParams sheared_tc_system() {
-  SystemParams p = make_system(500, 0.25, 0.8, 4.0);
-  p.tc_duration = 1e-5;
-  return p;
-}
+class ExactContinuation : public ::testing::TestWithParam<bool> {
+ protected:
+  // GetParam(): driven by a protocol.
+  SystemParams sheared_tc_system() const {
+    SystemParams p = make_system(500, 0.25, 0.8, 4.0);
+    p.tc_duration = 1e-5;
+    if (GetParam()) {
+      p.shear_history.ramp_time = 0.02;
+      p.shear_history.oscillation = ShearOscillation{1.5, 0.013, 0.01, 1e6};
+      p.shear_history.tolerance = 1e-2;
+    }
+    return p;
+  }
+  // In production from the start, so that the protocol runs.
+  Simulation make_driven(const SystemParams& p, std::uint64_t seed) const {
+    Simulation sim = make_simulation(p, seed);
+    sim.start_production(p.restitution);
+    return sim;
+  }
+};
 
 // The whole engine, bit for bit: two runs are the same run iff their checkpoints are equal.
 void expect_same_engine(const Simulation& a, const Simulation& b) {
@@ -42,22 +59,22 @@ struct Counter final : EventObserver {
 
 constexpr double kSpan = 120.0;  // collisions per particle
 
-TEST(ExactContinuation, SameSeedSameTrajectory) {
+TEST_P(ExactContinuation, SameSeedSameTrajectory) {
   const SystemParams p = sheared_tc_system();
-  Simulation a = make_simulation(p, 99);
-  Simulation b = make_simulation(p, 99);
+  Simulation a = make_driven(p, 99);
+  Simulation b = make_driven(p, 99);
   a.run(kInf, collisions_for(p, kSpan));
   b.run(kInf, collisions_for(p, kSpan));
   expect_same_engine(a, b);
 }
 
-TEST(ExactContinuation, StopsReadsAndObserversChangeNothing) {
+TEST_P(ExactContinuation, StopsReadsAndObserversChangeNothing) {
   const SystemParams p = sheared_tc_system();
-  Simulation reference = make_simulation(p, 7);
+  Simulation reference = make_driven(p, 7);
   ASSERT_EQ(reference.run(kInf, collisions_for(p, kSpan)), StopReason::kCollisionsReached);
   ASSERT_GE(reference.events(), 100 * p.particles) << "the span must cover many clock re-bases";
 
-  Simulation driven = make_simulation(p, 7);
+  Simulation driven = make_driven(p, 7);
   Counter counter;
   driven.add_observer(&counter);
   std::mt19937_64 random(3);
@@ -80,12 +97,12 @@ TEST(ExactContinuation, StopsReadsAndObserversChangeNothing) {
   expect_same_engine(reference, driven);
 }
 
-TEST(ExactContinuation, RestoredCheckpointsContinueTheSameRun) {
+TEST_P(ExactContinuation, RestoredCheckpointsContinueTheSameRun) {
   const SystemParams p = sheared_tc_system();
-  Simulation reference = make_simulation(p, 11);
+  Simulation reference = make_driven(p, 11);
   reference.run(kInf, collisions_for(p, kSpan));
 
-  auto current = std::make_unique<Simulation>(make_simulation(p, 11));
+  auto current = std::make_unique<Simulation>(make_driven(p, 11));
   const CellGrid grid = current->grid();
   int restores = 0;
   for (double c = 0.37; c < kSpan; c += 3.1, ++restores) {
@@ -99,9 +116,9 @@ TEST(ExactContinuation, RestoredCheckpointsContinueTheSameRun) {
   expect_same_engine(reference, *current);
 }
 
-TEST(ExactContinuation, CheckpointOfAnotherSystemIsRefused) {
+TEST_P(ExactContinuation, CheckpointOfAnotherSystemIsRefused) {
   const SystemParams p = sheared_tc_system();
-  Simulation sim = make_simulation(p, 1);
+  Simulation sim = make_driven(p, 1);
   sim.run(kInf, collisions_for(p, 1.0));
   StateArchive archive;
   sim.save(archive, "");
@@ -121,14 +138,17 @@ TEST(ExactContinuation, CheckpointOfAnotherSystemIsRefused) {
   EXPECT_THROW(Simulation(p, sim.grid(), archive, ""), std::runtime_error);
 }
 
-TEST(ExactContinuation, InvariantsHoldAlongARun) {
+TEST_P(ExactContinuation, InvariantsHoldAlongARun) {
   const SystemParams p = sheared_tc_system();
-  Simulation sim = make_simulation(p, 5);
+  Simulation sim = make_driven(p, 5);
   for (int k = 1; k <= 20; ++k) {
     sim.run(kInf, collisions_for(p, 0.5 * k));
     ASSERT_NO_THROW(sim.check_invariants()) << "after c = " << 0.5 * k;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Drives, ExactContinuation, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& drive) { return drive.param ? "Protocol" : "Constant"; });
 
 }  // namespace
 }  // namespace granule
