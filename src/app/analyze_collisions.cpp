@@ -11,7 +11,8 @@
 #include <memory>
 
 #include "app/analyze_command.hpp"
-#include "app/run_measurements.hpp"
+#include "driver/stop_loop.hpp"
+#include "driver/run_measurements.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_file.hpp"
 
@@ -58,17 +59,15 @@ int analyze_collisions(const CollisionsOptions& o) {
   Simulation sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
   const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
   std::filesystem::create_directories(out);
-  RunMeasurements measurements(config, out);
+  driver::RunMeasurements measurements(config, out);
   measurements.start(sim);
   const std::int64_t target =
       sim.collisions() + std::llround(o.collisions_per_particle * static_cast<double>(system.particles));
   while (true) {
-    const StopReason reason = sim.run(measurements.next_time(), std::min(target, measurements.next_collisions()));
-    const bool finished = sim.collisions() >= target || reason == StopReason::kNoEvents ||
-                          reason == StopReason::kInelasticCollapse;
-    measurements.after_step(sim, finished);
-    if (finished) break;
+    const StopReason reason = driver::advance_to_next_stop(sim, {&measurements}, {target, driver::kInf});
+    if (sim.collisions() >= target || reason == StopReason::kNoEvents || reason == StopReason::kInelasticCollapse) break;
   }
+  measurements.after_step(sim, true);
   const nlohmann::json figures = measurements.finish(sim);
   write_file_atomically(out + "/summary.json", figures.dump(2) + "\n");
   fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,

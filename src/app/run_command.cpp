@@ -1,5 +1,5 @@
 // `granule run`: validate a configuration and the output directory, prepare the initial state of
-// thesis §1.4.2 (or continue a run from its checkpoint), run it (app/run_session.hpp) and report.
+// thesis §1.4.2 (or continue a run from its checkpoint), run it (driver/run_session.hpp) and report.
 // Exit codes are listed in README.md ("Exit codes") and in exit_codes.hpp.
 #include "app/run_command.hpp"
 
@@ -13,7 +13,7 @@
 #include "app/interrupt_signals.hpp"
 #include "app/output_directory.hpp"
 #include "app/plot_run_picture.hpp"
-#include "app/run_session.hpp"
+#include "driver/run_session.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
@@ -25,6 +25,9 @@
 namespace granule::app {
 
 namespace {
+
+using driver::RunSession;
+using driver::stop_text;
 
 struct RunOptions {
   std::string config_path;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -212,12 +213,48 @@ RunConfig resolve(const toml::table& root) {
   return c;
 }
 
+
+// What a --set of a key replaces from the file (or the built-in example): the other ways of saying
+// the same thing, so that overriding never makes a "both are set" error; and for initial.from the
+// settings of a new gas (its pre-run too: a state taken from a run is not re-melted unless asked).
+const std::map<std::string, std::vector<std::string>>& replaced_keys() {
+  static const std::map<std::string, std::vector<std::string>> replaces = {
+      {"system.area_fraction", {"system.diameter"}},
+      {"system.diameter", {"system.area_fraction"}},
+      {"initial.temperature", {"initial.temperature_over_steady", "initial.from", "initial.frame"}},
+      {"initial.temperature_over_steady", {"initial.temperature", "initial.from", "initial.frame"}},
+      {"initial.from", {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile",
+                        "initial.placement", "initial.equilibrate"}},
+      {"output.every_collisions_per_particle", {"output.every_time"}},
+      {"output.every_time", {"output.every_collisions_per_particle"}},
+      {"output.snapshot_every_collisions_per_particle", {"output.snapshot_every_time"}},
+      {"output.snapshot_every_time", {"output.snapshot_every_collisions_per_particle"}},
+      {"fields.every_collisions_per_particle", {"fields.every_time"}},
+      {"fields.every_time", {"fields.every_collisions_per_particle"}},
+      {"boundary.shear_velocity", {"boundary.shear_schedule"}},
+      {"boundary.shear_schedule", {"boundary.shear_velocity", "boundary.shear_ramp_time"}},
+  };
+  return replaces;
+}
+
+void erase_replaced(toml::table& root, const std::string& assignment) {
+  const auto found = replaced_keys().find(assignment.substr(0, assignment.find('=')));
+  if (found == replaced_keys().end()) return;
+  for (const std::string& other : found->second) {
+    const auto dot = other.find('.');
+    if (toml::table* section = root[other.substr(0, dot)].as_table()) section->erase(other.substr(dot + 1));
+  }
+}
+
 }  // namespace
 
 ConfigResult parse_config(const std::string& text, const std::vector<std::string>& overrides) {
   try {
     toml::table root = toml::parse(text);
-    for (const auto& assignment : overrides) apply_override(root, assignment);
+    for (const auto& assignment : overrides) {
+      erase_replaced(root, assignment);
+      apply_override(root, assignment);
+    }
     return {resolve(root), {}};
   } catch (const toml::parse_error& error) {
     std::ostringstream out;

@@ -26,6 +26,17 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
   const std::string speeds = "0 or |U| in " + kSpeedRange.text();
   // Any finite U₀ here: its range depends on T_i, checked in resolve_speeds.
   const auto u0 = in.number_if("boundary.shear_velocity", [](double) { return true; }, speeds);
+  if (!c.lees_edwards) {
+    if (u0.value_or(0.0) != 0.0) {
+      throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\" (a periodic "
+                                    "box has no shear; allowed: 0)", *u0)};
+    }
+    for (const char* key : kShearKeys) {
+      if (in.has(key) && std::string(key) != "boundary.shear_velocity") {
+        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\" (a periodic box has no shear)", key)};
+      }
+    }
+  }
   for (const auto& [t, u] : in.number_pairs("boundary.shear_schedule", "[t, U]")) {
     if (!kTimes.contains(t) || !speed_allowed(u) || (!h.schedule.empty() && t < h.schedule.back().time)) {
       throw ConfigError{fmt::format("boundary.shear_schedule point [{}, {}] is not allowed: times t ≥ 0 in "
@@ -60,17 +71,6 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
   h.tolerance = in.number("boundary.shear_tolerance", kTolerances,
                           " (largest |U(t) − Ū| on a constant-velocity segment, relative to the largest |U|)")
                     .value_or(1e-3);
-  if (!c.lees_edwards) {
-    if (u0.value_or(0.0) != 0.0) {
-      throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\" (a periodic "
-                                    "box has no shear; allowed: 0)", *u0)};
-    }
-    for (const char* key : kShearKeys) {
-      if (in.has(key) && std::string(key) != "boundary.shear_velocity") {
-        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\" (a periodic box has no shear)", key)};
-      }
-    }
-  }
   return h.schedule.empty() ? u0.value_or(0.0) : h.schedule.back().velocity;
 }
 

@@ -13,14 +13,15 @@
 #include "analysis/collisional_stress.hpp"
 #include "analysis/free_paths.hpp"
 #include "analysis/impact_parameters.hpp"
-#include "app/schedule.hpp"
+#include "driver/schedule.hpp"
+#include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"
 #include "io/fields_file.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
-class RunMeasurements {
+class RunMeasurements final : public StopClient {
  public:
   // `out_dir` receives fields.h5 and collisions.h5 (+ CSV tables).
   RunMeasurements(const RunConfig& config, std::string out_dir);
@@ -35,8 +36,9 @@ class RunMeasurements {
   void resume(Simulation& sim, const StateArchive& archive, const std::string& prefix);
   void save(StateArchive& archive, const std::string& prefix) const;
   // The earliest collision count and time at which the loop must stop for a measurement.
-  std::int64_t next_collisions() const;
-  double next_time() const;
+  std::int64_t next_collisions() const override;
+  double next_time() const override;
+  void on_stop(Simulation& sim) override { after_step(sim, false); }
   // After every step of the loop: start the collision statistics, refresh the local density at
   // window boundaries, write a fields frame when one is due (`final` forces one).
   void after_step(Simulation& sim, bool final);
@@ -74,4 +76,4 @@ class RunMeasurements {
   Schedule windows_;
 };
 
-}  // namespace granule::app
+}  // namespace granule::driver

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <unistd.h>
 
-namespace granule::app {
+namespace granule::driver {
 
 class Progress {
  public:
@@ -38,4 +38,4 @@ class Progress {
   Clock::time_point last_;
 };
 
-}  // namespace granule::app
+}  // namespace granule::driver

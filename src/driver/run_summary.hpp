@@ -10,7 +10,7 @@
 #include "io/config.hpp"
 #include "observers/global_diagnostics.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 const char* stop_text(StopReason reason);
 
@@ -25,4 +25,4 @@ struct RunFacts {
 nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, const CellGrid& grid, StopReason reason,
                             const RunFacts& facts, const std::vector<DiagnosticsSample>& samples);
 
-}  // namespace granule::app
+}  // namespace granule::driver

@@ -1,4 +1,4 @@
-#include "app/run_measurements.hpp"
+#include "driver/run_measurements.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -7,7 +7,7 @@
 #include "granule/version.hpp"
 #include "io/collision_statistics_file.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 RunMeasurements::RunMeasurements(const RunConfig& config, std::string out_dir)
     : config_(config),
@@ -222,4 +222,4 @@ nlohmann::json RunMeasurements::finish(const Simulation& sim) {
   return j;
 }
 
-}  // namespace granule::app
+}  // namespace granule::driver

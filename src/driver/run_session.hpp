@@ -14,18 +14,21 @@
 #include <string>
 #include <vector>
 
-#include "app/progress.hpp"
-#include "app/run_measurements.hpp"
-#include "app/run_summary.hpp"
-#include "app/schedule.hpp"
+#include "driver/progress.hpp"
+#include "driver/run_measurements.hpp"
+#include "driver/run_summary.hpp"
+#include "driver/schedule.hpp"
+#include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"
 #include "io/snapshot_file.hpp"
 #include "observers/global_diagnostics.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
-class RunSession {
+// The session is itself the stop client of its time series and snapshots; the measurements are
+// another (driver/stop_loop.hpp).
+class RunSession final : public StopClient {
  public:
   // A new run into the existing, empty directory `out` from the initial state of §1.4.2, the
   // images held at `clock.held_shear_velocity` until production starts.
@@ -54,11 +57,16 @@ class RunSession {
   std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
   bool measurements_enabled() const { return measurements_ != nullptr; }
 
+  std::int64_t next_collisions() const override {
+    return std::min(sampling_.next_collisions, snapshotting_.next_collisions);
+  }
+  double next_time() const override { return std::min(sampling_.next_time, snapshotting_.next_time); }
+  // Samples and snapshots due at the present stop.
+  void on_stop(Simulation& sim) override;
+
  private:
   bool in_production() const { return diagnostics_ != nullptr; }
   void start_production();
-  // Outputs due at the present stop: samples, snapshots, measurements.
-  void write_due_outputs();
   void append_snapshot();
   void take_sample();
   void write_timeseries() const;
@@ -90,4 +98,4 @@ class RunSession {
   double last_csv_wall_ = 0.0;
 };
 
-}  // namespace granule::app
+}  // namespace granule::driver

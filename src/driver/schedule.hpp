@@ -16,7 +16,7 @@
 #include "engine/simulation.hpp"
 #include "engine/state_archive.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr std::int64_t kNoLimit = std::numeric_limits<std::int64_t>::max();
@@ -89,4 +89,4 @@ struct Schedule {
   }
 };
 
-}  // namespace granule::app
+}  // namespace granule::driver

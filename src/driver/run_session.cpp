@@ -1,4 +1,4 @@
-#include "app/run_session.hpp"
+#include "driver/run_session.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/timeseries_csv.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 namespace {
 
@@ -165,7 +165,7 @@ void RunSession::take_sample() {
 
 void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }
 
-void RunSession::write_due_outputs() {
+void RunSession::on_stop(Simulation&) {
   if (snapshotting_.due(*sim_)) {
     append_snapshot();
     snapshotting_.advance(*sim_);
@@ -179,7 +179,6 @@ void RunSession::write_due_outputs() {
       last_csv_wall_ = now;
     }
   }
-  measurements_->after_step(*sim_, false);
 }
 
 void RunSession::report_progress() {
@@ -205,12 +204,10 @@ StopReason RunSession::run(const volatile std::sig_atomic_t* interrupt) {
       }
       if (reason == StopReason::kNoEvents || sim_->collisions() >= equilibrate_collisions_) start_production();
     } else {
-      const std::int64_t target = std::min({until_collisions_, sampling_.next_collisions, snapshotting_.next_collisions,
-                                            measurements_->next_collisions(), sim_->collisions() + chunk});
-      reason = sim_->run(std::min({until_time_, sampling_.next_time, snapshotting_.next_time, measurements_->next_time()}),
-                         target);
+      // Outputs first, then the measurements: a sample joins the fields' interval before a frame.
+      reason = advance_to_next_stop(*sim_, {this, measurements_.get()},
+                                    {std::min(until_collisions_, sim_->collisions() + chunk), until_time_});
       if (reason == StopReason::kInterrupted) return reason;
-      write_due_outputs();
       if (reason == StopReason::kInelasticCollapse || reason == StopReason::kNoEvents ||
           sim_->collisions() >= until_collisions_ || sim_->time() >= until_time_) {
         return reason;
@@ -250,4 +247,4 @@ nlohmann::json RunSession::finish(StopReason reason) {
   return summary;
 }
 
-}  // namespace granule::app
+}  // namespace granule::driver

@@ -1,9 +1,9 @@
-#include "app/run_summary.hpp"
+#include "driver/run_summary.hpp"
 
 #include "granule/version.hpp"
 #include "theory/steady_shear.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 const char* stop_text(StopReason reason) {
   switch (reason) {
@@ -75,4 +75,4 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, cons
   return j;
 }
 
-}  // namespace granule::app
+}  // namespace granule::driver
