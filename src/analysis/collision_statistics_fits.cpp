@@ -63,12 +63,22 @@ double free_path_angular_cumulative(double alpha, double alpha0) {
 FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& lengths, const UniformBins& angles) {
   FreePathSummary s;
   s.paths = h.paths;
-  if (h.paths <= 0.0) return s;
+  const auto nl = static_cast<std::size_t>(lengths.bins), na = static_cast<std::size_t>(angles.bins);
+  if (h.paths <= 0.0) {
+    // No path recorded (a run stopped before its first window closed): every quantity is NaN, in
+    // arrays of the histogram's shape, so that writers never read past an empty vector.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.mean_length = s.mean_speed = s.l0_matched = s.lambda_exponential = nan;
+    s.lbar = s.lbar_rms = s.alpha0 = s.alpha0_rms = s.ks_matched = s.ks_exponential = nan;
+    s.cumulative.assign(nl * na, nan);
+    for (auto* v : {&s.magnitude_density, &s.matched_density, &s.exponential_density, &s.length_cumulative}) v->assign(nl, nan);
+    for (auto* v : {&s.angular_cumulative, &s.angular_fit}) v->assign(na, nan);
+    return s;
+  }
   s.mean_length = h.sum_length / h.paths;
   s.mean_speed = h.sum_speed / h.paths;
   s.l0_matched = 2.0 * s.mean_length;
   s.lambda_exponential = s.mean_length;
-  const auto nl = static_cast<std::size_t>(lengths.bins), na = static_cast<std::size_t>(angles.bins);
 
   // L(l, α) (3.23): the fraction of all paths (overflow included in the total) shorter than l
   // with angle below α.

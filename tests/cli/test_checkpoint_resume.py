@@ -44,9 +44,16 @@ killed = WORK / "killed"
 kills = {"SIGKILL": 0, "SIGINT": 0, "SIGTERM": 0}
 command = [GRANULE, "run", "--out", str(killed), *SYSTEM, *OUTPUTS]
 for attempt in range(16):
+    config = killed / "config.toml"
+    stamp = config.stat().st_mtime_ns if config.exists() else None
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    # Not before the process has installed its handlers (a few ms; more on a loaded machine).
-    time.sleep(rng.uniform(0.25, 0.5))
+    # Not before the process has installed its handlers: it does so before it (re)writes
+    # config.toml, which takes long on a loaded machine or under the sanitizers.
+    deadline = time.monotonic() + 60
+    while (not config.exists() or config.stat().st_mtime_ns == stamp) and process.poll() is None \
+            and time.monotonic() < deadline:
+        time.sleep(0.01)
+    time.sleep(rng.uniform(0.05, 0.35))
     name = rng.choice(list(kills))
     process.send_signal(getattr(signal, name))
     code = process.wait(timeout=120)

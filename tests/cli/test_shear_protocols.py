@@ -87,21 +87,36 @@ check(r.returncode == 0 and same_h5(run / "snapshots.h5", again / "snapshots.h5"
 killed = WORK / "killed"
 command = [GRANULE, "run", "--out", str(killed), *SYSTEM, *PROTOCOL, "--set", "output.checkpoint_every_seconds=0.05"]
 interruptions = 0
+
+def next_command():
+    """Resume when a checkpoint exists; a run killed before its first one starts again."""
+    if (killed / "checkpoint.h5").exists():
+        return [GRANULE, "run", "--resume", str(killed)]
+    return [*command, "--force"]
+
+
 for attempt, sig in enumerate([signal.SIGTERM, signal.SIGKILL, signal.SIGTERM]):
-    process = subprocess.Popen(command if attempt == 0 else [GRANULE, "run", "--resume", str(killed)],
-                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    time.sleep(0.3 + 0.15 * attempt)
+    config = killed / "config.toml"
+    stamp = config.stat().st_mtime_ns if config.exists() else None
+    process = subprocess.Popen(next_command(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    # Signal handlers are installed before config.toml is (re)written.
+    deadline = time.monotonic() + 60
+    while (not config.exists() or config.stat().st_mtime_ns == stamp) and process.poll() is None \
+            and time.monotonic() < deadline:
+        time.sleep(0.01)
+    time.sleep(0.05 + 0.05 * attempt)
     process.send_signal(sig)
     code = process.wait(timeout=120)
     if code == 0:
         break
     interruptions += 1
-r = granule("run", "--resume", killed)
+r = subprocess.run(next_command(), capture_output=True, text=True, timeout=300)
 check(r.returncode == 0, f"resume failed: {r.stderr[-300:]}")
 differing = same_h5(run / "snapshots.h5", killed / "snapshots.h5")
 check(differing == [], f"resumed run differs in {differing[:5]}")
 check((run / "timeseries.csv").read_text() == (killed / "timeseries.csv").read_text(), "resumed time series differs")
 print(f"{interruptions} interruptions, resumed run identical: {differing == []}")
+check(interruptions >= 1, "the run was interrupted at least once")
 
 # A static start (§4.3): no shear profile in the first frame; the default start has one.
 def first_frame_slope(directory):

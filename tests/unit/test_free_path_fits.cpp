@@ -223,5 +223,23 @@ TEST(FreePathFits, FitsFailWhenThePathsLieOutsideTheHistogram) {
   }
 }
 
+// A window that closed with no path (a run interrupted early): NaN everywhere, in arrays of the
+// histogram's shape — the writers index them by bin (UBSan found them reading empty vectors).
+TEST(FreePathSummary, NoPathsGiveNaNArraysOfTheHistogramsShape) {
+  const UniformBins lengths{0.0, 2.0, 7}, angles{0.0, 2.0 * std::numbers::pi, 5};
+  PathHistogram empty;
+  empty.counts.assign(35, 0.0);
+  empty.overflow.assign(5, 0.0);
+  const FreePathSummary s = summarize_free_paths(empty, lengths, angles);
+  EXPECT_EQ(s.paths, 0.0);
+  EXPECT_EQ(s.cumulative.size(), 35u);
+  for (const auto* v : {&s.magnitude_density, &s.matched_density, &s.exponential_density, &s.length_cumulative}) {
+    ASSERT_EQ(v->size(), 7u);
+    EXPECT_TRUE(std::all_of(v->begin(), v->end(), [](double x) { return std::isnan(x); }));
+  }
+  for (const auto* v : {&s.angular_cumulative, &s.angular_fit}) ASSERT_EQ(v->size(), 5u);
+  EXPECT_TRUE(std::isnan(s.mean_length) && std::isnan(s.lbar) && std::isnan(s.alpha0));
+}
+
 }  // namespace
 }  // namespace granule
