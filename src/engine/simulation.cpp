@@ -58,7 +58,9 @@ void Simulation::allocate_arrays() {
   kind_.assign(n, EventKind::kNone);
   partner_.assign(n, -1);
   partner_count_.assign(n, 0);
-  collision_time_.assign(n, kInf);
+  // Kept only where U changes over and over (a time-dependent protocol): +8 B per disk and one
+  // store per prediction that a constant drive does not pay.
+  if (!protocol_.constant()) collision_time_.assign(n, kInf);
 }
 
 double Simulation::shear_offset() const {
@@ -197,6 +199,10 @@ void Simulation::change_image_velocity(double velocity) {
 
 void Simulation::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
+  if (collision_time_.empty()) {  // a constant protocol changes U once at most (a static start)
+    for (std::int32_t i = 0; i < n; ++i) predict(i);
+    return;
+  }
   for (std::int32_t i = 0; i < n; ++i) {
     const int row = grid_.row_of(cell_[at(i)]);
     if (row == 0 || row == grid_.ny - 1) {
@@ -280,7 +286,7 @@ void Simulation::predict(std::int32_t i) {
   kind_[at(i)] = next.kind();
   partner_[at(i)] = next.partner;
   partner_count_[at(i)] = next.partner >= 0 ? count_[at(next.partner)] : 0;
-  collision_time_[at(i)] = t_now_ + next.collision_delay;
+  if (!collision_time_.empty()) collision_time_[at(i)] = t_now_ + next.collision_delay;
   heap_.update(i, t_now_ + next.delay());
 }
 

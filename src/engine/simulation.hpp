@@ -177,7 +177,8 @@ class Simulation {
   std::vector<EventKind> kind_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint32_t> partner_count_;
-  std::vector<double> collision_time_;  // the earliest collision found, pending or not (+inf: none)
+  // The earliest collision found, pending or not (+inf: none); time-dependent protocols only.
+  std::vector<double> collision_time_;
 
   CellLists lists_;
   EventHeap heap_;

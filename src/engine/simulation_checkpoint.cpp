@@ -115,9 +115,11 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
     } else if constexpr (std::is_same_v<Value, std::int64_t>) {
       value = archive.integer(prefix + name);
     } else {
-      // Per-disk arrays; the TC history exists only with the TC model.
-      const bool tc_only = std::string_view(name) == "last_collision";
-      value = array_of_size<typename Value::value_type>(archive, prefix + name, tc_only && params.tc_duration <= 0.0 ? 0 : n);
+      // Per-disk arrays; the TC history exists only with the TC model, the kept collision times
+      // only under a time-dependent shear protocol.
+      const bool absent = (std::string_view(name) == "last_collision" && params.tc_duration <= 0.0) ||
+                          (std::string_view(name) == "collision_time" && protocol_.constant());
+      value = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
     }
   });
   shear_rate_ = frame_.shear_velocity / params.length_y;
