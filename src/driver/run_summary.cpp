@@ -16,7 +16,7 @@ const char* stop_text(StopReason reason) {
   return "unknown";
 }
 
-nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, const CellGrid& grid, StopReason reason,
+nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, const CellGrid& grid, StopReason reason,
                             const RunFacts& facts, const std::vector<DiagnosticsSample>& samples) {
   const SystemParams& s = config.system;
   nlohmann::json j;
