@@ -48,7 +48,8 @@ double mixture_contact_value(int dimension, std::span<const MixtureSpecies> spec
          0.5 * phi * phi * z * z / (one_minus * one_minus * one_minus);
 }
 
-double mixture_pressure(int dimension, std::span<const MixtureSpecies> species, double temperature) {
+double mixture_pressure(int dimension, std::span<const MixtureSpecies> species,
+                        double temperature) {
   double density = 0.0, contact_sum = 0.0;
   for (std::size_t i = 0; i < species.size(); ++i) {
     density += species[i].number_density;

@@ -39,7 +39,8 @@ double mixture_contact_value(int dimension, std::span<const MixtureSpecies> spec
 double mixture_pressure(int dimension, std::span<const MixtureSpecies> species, double temperature);
 
 // Enskog frequency of collisions of one particle of species i with particles of species j:
-// ω_ij = n_j g_ij β σ_ij^{d−1} ⟨|g|⟩_μij with μ_ij = m_i m_j/(m_i + m_j) (enskog_collision_frequency):
+// ω_ij = n_j g_ij β σ_ij^{d−1} ⟨|g|⟩_μij with μ_ij = m_i m_j/(m_i + m_j)
+// (enskog_collision_frequency):
 // n_j g_ij σ_ij √(2πT/μ_ij) in 2D, n_j g_ij σ_ij² √(8πT/μ_ij) in 3D [1/time].
 double species_pair_collision_frequency(int dimension, std::span<const MixtureSpecies> species,
                                         std::size_t i, std::size_t j, double temperature);
