@@ -49,12 +49,17 @@ PlacementGrid::PlacementGrid(const SystemParams& p) : dimension(p.dimension) {
   const double n = static_cast<double>(p.particles);
   const double per_particle = dimension == 3 ? std::cbrt(p.length_x * p.length_y * p.length_z / n)
                                              : std::sqrt(p.length_x * p.length_y / n);
-  const double side = std::max(p.diameter, per_particle);
-  std::size_t cells = 1;
-  for (int a = 0; a < dimension; ++a) {  // the product is at most V / side^d ≤ N, so each fits an int
-    count[static_cast<std::size_t>(a)] = std::max(1, static_cast<int>(std::floor(box_length(p, a) / side)));
-    width[static_cast<std::size_t>(a)] = box_length(p, a) / count[static_cast<std::size_t>(a)];
-    cells *= static_cast<std::size_t>(count[static_cast<std::size_t>(a)]);
+  // At most V / side^d ≤ N cells, unless a side shorter than `side` still gets its one layer: then
+  // the side grows until the count is at most N again (the grid changes speed only, not results).
+  std::size_t cells = 0;
+  for (double side = std::max(p.diameter, per_particle); cells == 0 || cells > static_cast<std::size_t>(p.particles);
+       side *= 1.25) {
+    cells = 1;
+    for (int a = 0; a < dimension; ++a) {  // each count ≤ L/side ≤ 10⁹ (the config's bound) fits an int
+      count[a] = std::max(1, static_cast<int>(std::floor(box_length(p, a) / side)));
+      width[a] = box_length(p, a) / count[a];
+      cells *= static_cast<std::size_t>(count[a]);
+    }
   }
   head.assign(cells, -1);
   next.assign(static_cast<std::size_t>(p.particles), -1);
