@@ -108,7 +108,7 @@ std::unique_ptr<RunSession> new_session(const RunConfig& config, const CellGrid&
     InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
                                                     config.placement, clock.held_shear_velocity);
     if (!initial.error.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.area_fraction)};
+      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.packing_fraction)};
     }
     state = std::move(initial.state);
   }
@@ -193,7 +193,7 @@ std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const Ce
 void print_header(const RunConfig& config) {
   const SystemParams& s = config.system;
   fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, s.particles,
-             config.area_fraction, s.diameter, s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic", s.length_x,
+             config.packing_fraction, s.diameter, s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic", s.length_x,
              s.length_y, config.lees_edwards ? fmt::format(", U = {}", s.shear_velocity) : std::string{});
   if (config.equilibrate > 0.0) fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
 }

@@ -79,7 +79,7 @@ void RunSession::start_production() {
   samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
                                           sim_->shear_offset()));
   snapshots_ = std::make_unique<SnapshotWriter>(
-      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.area_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
+      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.packing_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
                                                config_.seed, kVersion});
   append_snapshot();
   measurements_ = std::make_unique<RunMeasurements>(config_, out_);
