@@ -1,5 +1,7 @@
-// The benchmark workloads of issue 3: elastic disks at ν = 0.05 and 0.5, free cooling at e = 0.9
-// and Lees–Edwards shear at e = 0.8, each N = 10^5 unless --particles says otherwise.
+// The benchmark workloads: in 2D (issue 3) elastic disks at ν = 0.05 and 0.5, free cooling at
+// e = 0.9 and Lees–Edwards shear at e = 0.8, N = 10^5 unless --particles says otherwise; in 3D
+// (issue 14) elastic spheres at φ = 0.30 and 0.05, free cooling at e = 0.9 and Lees–Edwards shear
+// at e = 0.8 (φ = 0.05), N = 108000 unless --particles-3d says otherwise.
 #include "app/bench_command.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include "analysis/collisional_stress.hpp"
 #include "analysis/free_paths.hpp"
@@ -16,6 +19,7 @@
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"
 #include "observers/global_diagnostics.hpp"
+#include "theory/hard_spheres.hpp"
 #include "theory/steady_shear.hpp"
 
 namespace granule::app {
@@ -24,13 +28,15 @@ namespace {
 
 struct Workload {
   const char* name;
-  double area_fraction;
+  double area_fraction;  // ν: area fraction in 2D, volume fraction in 3D
   double restitution;
   bool lees_edwards;
 };
 
 struct BenchOptions {
   std::int64_t particles = 100000;
+  std::int64_t particles_3d = 108000;
+  std::string dimensions = "both";
   double collisions_per_particle = 20.0;
   double particles_per_cell = 1.0;
   std::uint64_t seed = 7;
@@ -43,50 +49,77 @@ enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePath
 // Times `o.collisions_per_particle` after the untimed start, in chunks of one collision per particle;
 // at each chunk the run loop's O(N) work of the chosen measurements (diagnostics sample, density
 // refresh) is done as in `granule run`.
-void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
+// The system of a workload: a unit square or cube at packing fraction ν.  Lees–Edwards workloads
+// shear at the rate whose steady temperature is the initial T = 1 — in 2D from the thesis's fit
+// (3.1); in 3D from the dilute balance of viscous heating η γ² (η = 5/(16σ²)√(T/π)) and collisional
+// cooling n ω (1 − e²) T/2 (ω the Enskog collision frequency), good to a factor of order one —
+// so that the run compares per collision with the periodic workloads at the same temperature.
+SystemParams workload_system(const Workload& w, int dimension, std::int64_t particles) {
   SystemParams p;
-  p.particles = o.particles;
-  p.length_x = p.length_y = 1.0;
-  p.diameter = std::sqrt(4.0 * w.area_fraction / (M_PI * static_cast<double>(p.particles)));
+  p.dimension = dimension;
+  p.particles = particles;
+  p.length_x = p.length_y = p.length_z = 1.0;
+  const auto n = static_cast<double>(particles);
+  p.diameter = dimension == 2 ? std::sqrt(4.0 * w.area_fraction / (M_PI * n)) : std::cbrt(6.0 * w.area_fraction / (M_PI * n));
   p.restitution = 1.0;
-  double temperature = 1.0;
   if (w.lees_edwards) {
-    // Shear at the rate whose steady temperature (thesis fit 3.1) is the initial T = 1, so that
-    // the run compares per collision with the periodic workloads at the same temperature.
-    const double t_per_gamma2 = theory::steady_shear_temperature_tan_fit(w.restitution, 1.0, p.diameter, w.area_fraction);
-    p.shear_velocity = std::sqrt(temperature / t_per_gamma2) * p.length_y;
+    double rate = 0.0;
+    if (dimension == 2) {
+      rate = std::sqrt(1.0 / theory::steady_shear_temperature_tan_fit(w.restitution, 1.0, p.diameter, w.area_fraction));
+    } else {
+      const double omega = theory::hard_sphere_collision_frequency(3, n, p.diameter, theory::hard_sphere_contact_value(3, w.area_fraction), 1.0, 1.0);
+      const double viscosity = 5.0 / (16.0 * p.diameter * p.diameter) * std::sqrt(1.0 / M_PI);
+      rate = std::sqrt(n * omega * (1.0 - w.restitution * w.restitution) * 0.5 / viscosity);
+    }
+    p.shear_velocity = rate * p.length_y;
   }
-  const CellGridChoice grid = choose_cell_grid({p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards,
-                                                o.particles_per_cell, std::nullopt});
+  return p;
+}
+
+// Times `o.collisions_per_particle` after the untimed start, in chunks of one collision per particle;
+// at each chunk the run loop's O(N) work of the chosen measurements (diagnostics sample, density
+// refresh) is done as in `granule run` (2D: the measurements are those of 2D runs).
+template <int D>
+void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
+  const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d);
+  constexpr double temperature = 1.0;
+  CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards, o.particles_per_cell, std::nullopt};
+  request.dimension = D;
+  request.length_z = p.length_z;
+  const CellGridChoice grid = choose_cell_grid(request);
   const InitialStateResult init = make_initial_state(p, temperature, o.seed, Placement::kAuto);
   if (!grid.grid || !init.error.empty()) {
     fmt::print("{:<28} cannot be set up: {}{}\n", w.name, grid.error, init.error);
     return;
   }
-  Simulation<2> sim(p, *grid.grid, init.state);
+  Simulation<D> sim(p, *grid.grid, init.state);
   // Melt lattices and forget the initial transient: 2 elastic collisions per particle, untimed.
   sim.run(std::numeric_limits<double>::infinity(), 2 * p.particles);
   sim.start_production(w.restitution);
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
+  const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
   const FieldGrid cells = default_field_grid(p.length_x, p.length_y, p.particles);
   GlobalDiagnostics diagnostics(p, cells.nx, cells.ny);
   CollisionalStressField stress(cells, p.diameter);
   LocalDensity density(cells);
   ImpactParameterStatistics impacts(p.diameter, 50, p.particles, {}, &density);
   FreePathStatistics paths(p.particles, FreePathSettings{}, &density);
-  paths.start();
-  const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
-  if (at_least(Measurements::kDiagnostics)) sim.add_observer(&diagnostics);
-  if (at_least(Measurements::kStressField)) sim.add_observer(&stress);
-  if (at_least(Measurements::kImpacts)) sim.add_observer(&impacts);
-  if (at_least(Measurements::kFreePaths)) sim.add_observer(&paths);
+  if constexpr (D == 2) {
+    paths.start();
+    if (at_least(Measurements::kDiagnostics)) sim.add_observer(&diagnostics);
+    if (at_least(Measurements::kStressField)) sim.add_observer(&stress);
+    if (at_least(Measurements::kImpacts)) sim.add_observer(&impacts);
+    if (at_least(Measurements::kFreePaths)) sim.add_observer(&paths);
+  }
   const auto start = std::chrono::steady_clock::now();
   while (sim.collisions() < target) {
     sim.run(std::numeric_limits<double>::infinity(), std::min<std::int64_t>(target, sim.collisions() + p.particles));
-    if (at_least(Measurements::kDiagnostics)) {
-      diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
+    if constexpr (D == 2) {
+      if (at_least(Measurements::kDiagnostics)) {
+        diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
+      }
+      if (at_least(Measurements::kImpacts)) density.update(sim.state());
     }
-    if (at_least(Measurements::kImpacts)) density.update(sim.state());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   static const char* const kMeasured[] = {"", " +diagnostics", " +stress field", " +impacts", " +free paths"};
@@ -101,7 +134,13 @@ void add_bench_command(CLI::App& root) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* command = root.add_subcommand("bench", "Time the standard workloads on one core and print collisions per "
                                                    "second and bytes per particle");
-  command->add_option("--particles", options->particles, "Disks per workload")->default_val(100000)->check(CLI::Range(100, 100000000));
+  command->add_option("--particles", options->particles, "Disks per 2D workload")->default_val(100000)->check(CLI::Range(100, 100000000));
+  command->add_option("--particles-3d", options->particles_3d, "Spheres per 3D workload")
+      ->default_val(108000)
+      ->check(CLI::Range(100, 100000000));
+  command->add_option("--dimensions", options->dimensions, "Which workloads: 2, 3 or both")
+      ->default_val("both")
+      ->check(CLI::IsMember({"2", "3", "both"}));
   command->add_option("--collisions-per-particle", options->collisions_per_particle, "Timed collisions per particle (c)")
       ->default_val(20.0)
       ->check(CLI::Range(0.1, 1e6));
@@ -121,12 +160,23 @@ void add_bench_command(CLI::App& root) {
         {"free cooling e=0.9, nu=0.05", 0.05, 0.9, false},
         {"Lees-Edwards e=0.8, nu=0.05", 0.05, 0.8, true},
     };
-    for (const Workload& w : workloads) run_workload(w, *options);
-    if (!options->observers) return;
+    const Workload workloads_3d[] = {
+        {"3D elastic, phi=0.30", 0.30, 1.0, false},
+        {"3D elastic, phi=0.05", 0.05, 1.0, false},
+        {"3D free cooling e=0.9, 0.05", 0.05, 0.9, false},
+        {"3D Lees-Edwards e=0.8, 0.05", 0.05, 0.8, true},
+    };
+    if (options->dimensions != "3") {
+      for (const Workload& w : workloads) run_workload<2>(w, *options);
+    }
+    if (options->dimensions != "2") {
+      for (const Workload& w : workloads_3d) run_workload<3>(w, *options);
+    }
+    if (!options->observers || options->dimensions == "3") return;
     for (const Workload& w : {workloads[2], workloads[3]}) {
       for (Measurements m : {Measurements::kDiagnostics, Measurements::kStressField, Measurements::kImpacts,
                              Measurements::kFreePaths}) {
-        run_workload(w, *options, m);
+        run_workload<2>(w, *options, m);
       }
     }
   });
