@@ -82,6 +82,8 @@ int analyze_fields(const FieldsOptions& o) {
     out.t_start = t_start;
     out.c_start = c_start;
     out.configurations = running.configurations;
+    out.shear_offset = f.shear_offset;
+    out.shear_velocity = head.metadata.boundary == "lees-edwards" ? f.shear_velocity : 0.0;
     out.instant = fields_from_moments(instant, frame, f.shear_offset, o.subtract_shear);
     out.average = fields_from_moments(running, frame, f.shear_offset, o.subtract_shear);
     writer.append(out);

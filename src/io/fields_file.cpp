@@ -49,6 +49,13 @@ void for_each_scalar(Frame& f, Visit&& visit) {
   visit("/frames/c_start", f.c_start);
 }
 
+// The Lees–Edwards state of a frame (3D files only), in one list.
+template <typename Frame, typename Visit>
+void for_each_image_scalar(Frame& f, Visit&& visit) {
+  visit("/frames/shear_offset", f.shear_offset);
+  visit("/frames/shear_velocity", f.shear_velocity);
+}
+
 }  // namespace
 
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
@@ -79,6 +86,7 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   FieldsFrame shape;
   shape.instant.grid = grid;
   for_each_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
+  if (grid.dimension == 3) for_each_image_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
   add_frames(f, "/average/configurations", H5T_NATIVE_INT, {});
   for_each_field(shape.instant, [&](const char* name, std::vector<double>&) {
     add_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
@@ -108,7 +116,9 @@ FieldsWriter::FieldsWriter(const std::string& path, std::int64_t keep_frames)
 void FieldsWriter::append(const FieldsFrame& frame) {
   const hid_t f = file_.get();
   const auto at = static_cast<hsize_t>(file_.frames());
-  for_each_scalar(frame, [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); });
+  const auto append_scalar = [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); };
+  for_each_scalar(frame, append_scalar);
+  if (grid_.dimension == 3) for_each_image_scalar(frame, append_scalar);
   append_frame(f, "/average/configurations", H5T_NATIVE_INT, &frame.configurations, at);
   for_each_field(frame.instant, [&](const char* name, const std::vector<double>& v) {
     append_frame(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);

@@ -27,6 +27,10 @@ struct FieldsFrame {
   double t = 0.0, c = 0.0;              // time and collisions per particle of the frame
   double t_start = 0.0, c_start = 0.0;  // start of the averaging interval
   int configurations = 0;               // configurations in the interval average
+  // The Lees–Edwards image offset Δ and velocity U(t) at the frame (0 in a periodic box), which the
+  // pictures need to smooth across the images; written to 3D files only (/frames/shear_offset,
+  // /frames/shear_velocity), so a 2D file stays what it was.
+  double shear_offset = 0.0, shear_velocity = 0.0;
   CellFields instant;
   CellFields average;
   std::optional<CollisionalStress> collisional;  // only when collisions were observed
