@@ -154,14 +154,15 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
     std::array<double, 3> v{};
     for (int a = 0; a < d; ++a) v[a] = f.velocity(a)[c] = m.momentum(a)[c] / mass;
     // Identity (1.5): ⟨v'_a v'_b⟩ = ⟨v_a v_b⟩ − ⟨v_a⟩⟨v_b⟩ (averages weighted by mass).
+    // The diagonal terms are never −0 (Σ m v_a² ≥ 0), so sums from +0 are the 2D code's xx + yy bit for bit.
     double trace = 0.0, kinetic_trace = 0.0;
     for (int a = 0; a < d; ++a) {
       for (int b = a; b < d; ++b) {
         const double covariance = m.second_moment(a, b)[c] / mass - v[a] * v[b];
         f.kinetic(a, b)[c] = mass_density * covariance;
         if (a == b) {
-          trace = a == 0 ? covariance : trace + covariance;
-          kinetic_trace = a == 0 ? f.kinetic(a, a)[c] : kinetic_trace + f.kinetic(a, a)[c];
+          trace += covariance;
+          kinetic_trace += f.kinetic(a, a)[c];
         }
       }
     }
