@@ -19,7 +19,7 @@ auto sum_arrays(Sums& s) {
 
 }  // namespace
 
-Vec2 pair_velocity_at_contact(const CollisionRecord& r, double diameter, double length_y) {
+Vec2 pair_velocity_at_contact(const CollisionRecord<2>& r, double diameter, double length_y) {
   // Before mapping into the box the contact point lies σ/2 from disk 1 along k̂; the recorded
   // one is a box height away from there when it was mapped to disk 2's side.
   const double unmapped_y = r.first_position.y + 0.5 * diameter * r.contact_normal.y;
@@ -32,7 +32,7 @@ CollisionalStressField::CollisionalStressField(const FieldGrid& grid, double dia
   for (const auto& [name, values] : sum_arrays(sums_)) values->assign(grid.cells(), 0.0);
 }
 
-void CollisionalStressField::on_collision(const CollisionRecord& r) {
+void CollisionalStressField::on_collision(const CollisionRecord<2>& r) {
   const std::size_t c = grid_.index(r.contact_point.x, r.contact_point.y);
   const double j = r.impulse;
   const Vec2 k = r.contact_normal;

@@ -43,10 +43,10 @@ struct CollisionalStress {
   std::vector<double> energy_x, energy_y;  // σ/(V t) Σ J k̂ (k̂·s): the lab-frame energy transfer
 };
 
-class CollisionalStressField final : public EventObserver {
+class CollisionalStressField final : public EventObserver<2> {
  public:
   CollisionalStressField(const FieldGrid& grid, double diameter);
-  void on_collision(const CollisionRecord& record) override;
+  void on_collision(const CollisionRecord<2>& record) override;
   // Start a new averaging interval at time t.
   void restart(double t);
   // The stress (1.6) and energy transfer over the interval [start, t].
@@ -66,7 +66,7 @@ class CollisionalStressField final : public EventObserver {
 // holds the record's contact point: disk 1's frame if the contact point lies on its side of the
 // box, else (a contact mapped across the Lees–Edwards boundary) disk 2's.  No U needed: the
 // relative velocity v₂₁ is the same in every frame.  `length_y` is the box height L_y.
-Vec2 pair_velocity_at_contact(const CollisionRecord& record, double diameter, double length_y);
+Vec2 pair_velocity_at_contact(const CollisionRecord<2>& record, double diameter, double length_y);
 
 // q^(c) = σ/(V t) E − τ^(c)·V per cell, V = (reference_x, reference_y) the lab velocity the
 // peculiar velocities are taken from in each cell (normally the interval's mean V(r)).

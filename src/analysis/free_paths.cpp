@@ -44,7 +44,7 @@ FreePathStatistics::FreePathStatistics(std::int64_t particles, FreePathSettings 
       by_density_(settings_.density_windows.size(), empty_histogram(settings_)),
       by_speed_(settings_.speed_windows.size(), empty_histogram(settings_)) {}
 
-void FreePathStatistics::on_collision(const CollisionRecord& r) {
+void FreePathStatistics::on_collision(const CollisionRecord<2>& r) {
   record_path(r.first, r.time, r.contact_point, r.first_velocity_after);
   record_path(r.second, r.time, r.contact_point, r.second_velocity_after);
 }

@@ -41,10 +41,10 @@ struct FreePathSettings {
   std::vector<SpeedWindow> speed_windows;
 };
 
-class FreePathStatistics final : public EventObserver {
+class FreePathStatistics final : public EventObserver<2> {
  public:
   FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density);
-  void on_collision(const CollisionRecord& record) override;
+  void on_collision(const CollisionRecord<2>& record) override;
   // Only paths ending after start() are recorded; paths that began before it are (their start
   // is known from the disks' earlier collisions).
   void start() { recording_ = true; }

@@ -7,7 +7,7 @@
 
 namespace granule {
 
-double impact_parameter(const CollisionRecord& r, double diameter) {
+double impact_parameter(const CollisionRecord<2>& r, double diameter) {
   const Vec2 k = r.contact_normal, v = r.relative_velocity;
   return diameter * std::abs(k.x * v.y - k.y * v.x) / std::sqrt(v.x * v.x + v.y * v.y);
 }
@@ -25,7 +25,7 @@ ImpactParameterStatistics::ImpactParameterStatistics(double diameter, int bins, 
   open_.counts.assign(static_cast<std::size_t>(bins), 0.0);
 }
 
-void ImpactParameterStatistics::on_collision(const CollisionRecord& r) {
+void ImpactParameterStatistics::on_collision(const CollisionRecord<2>& r) {
   if (open_.collisions == 0) open_.t_start = r.time;
   // b = σ exactly (a perfectly grazing contact) belongs to the last bin.
   const double x = impact_parameter(r, diameter_) / diameter_;

@@ -14,7 +14,7 @@
 
 namespace granule {
 
-double impact_parameter(const CollisionRecord& record, double diameter);
+double impact_parameter(const CollisionRecord<2>& record, double diameter);
 
 struct ImpactParameterWindow {
   double t_start = 0.0, t_end = 0.0;
@@ -22,12 +22,12 @@ struct ImpactParameterWindow {
   std::vector<double> counts;  // per bin of b/σ
 };
 
-class ImpactParameterStatistics final : public EventObserver {
+class ImpactParameterStatistics final : public EventObserver<2> {
  public:
   // `density` (may be null: no density windows) is refreshed by the caller at each window start.
   ImpactParameterStatistics(double diameter, int bins, std::int64_t window_collisions,
                             std::vector<DensityWindow> density_windows, const LocalDensity* density);
-  void on_collision(const CollisionRecord& record) override;
+  void on_collision(const CollisionRecord<2>& record) override;
 
   const UniformBins& bins() const { return bins_; }  // of b/σ on [0, 1]
   const std::vector<ImpactParameterWindow>& windows() const { return windows_; }  // closed windows

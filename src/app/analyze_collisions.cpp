@@ -56,7 +56,7 @@ int analyze_collisions(const CollisionsOptions& o) {
     fmt::print(stderr, "granule analyze collisions: error: {}\n", choice.error);
     return kExitBadInput;
   }
-  Simulation sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
+  Simulation<2> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
   const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
   std::filesystem::create_directories(out);
   driver::RunMeasurements measurements(config, out);

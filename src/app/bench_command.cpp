@@ -63,7 +63,7 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
     fmt::print("{:<28} cannot be set up: {}{}\n", w.name, grid.error, init.error);
     return;
   }
-  Simulation sim(p, *grid.grid, init.state);
+  Simulation<2> sim(p, *grid.grid, init.state);
   // Melt lattices and forget the initial transient: 2 elastic collisions per particle, untimed.
   sim.run(std::numeric_limits<double>::infinity(), 2 * p.particles);
   sim.start_production(w.restitution);

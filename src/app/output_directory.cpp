@@ -120,7 +120,7 @@ void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
   const auto n = static_cast<double>(config.system.particles);
   const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
                              static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
-  const double needed = 320.0 * n + 4.0 * grid.cell_count() + 40.0 * 8.0 * field_cells;
+  const double needed = 320.0 * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
   const double available = available_bytes();
   if (available > 0.0 && needed > available) {
     throw CommandFailure{kExitOutOfMemory,

@@ -108,7 +108,7 @@ std::unique_ptr<RunSession> new_session(const RunConfig& config, const CellGrid&
     InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
                                                     config.placement, clock.held_shear_velocity);
     if (!initial.error.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.area_fraction)};
+      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.packing_fraction)};
     }
     state = std::move(initial.state);
   }
@@ -134,7 +134,7 @@ std::unique_ptr<RunSession> resumed_session(const RunConfig& config, const CellG
   }();
   remove_end_of_run_outputs(out);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  const Simulation& sim = session->simulation();
+  const Simulation<2>& sim = session->simulation();
   fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, sim.time(), sim.collisions_per_particle());
   return session;
 }
@@ -193,14 +193,14 @@ std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const Ce
 void print_header(const RunConfig& config) {
   const SystemParams& s = config.system;
   fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, s.particles,
-             config.area_fraction, s.diameter, s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic", s.length_x,
+             config.packing_fraction, s.diameter, s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic", s.length_x,
              s.length_y, config.lees_edwards ? fmt::format(", U = {}", s.shear_velocity) : std::string{});
   if (config.equilibrate > 0.0) fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
 }
 
 // The mean free time per disk over the last sampled interval (each collision involves two disks).
 double mean_free_time(const RunSession& session) {
-  const Simulation& sim = session.simulation();
+  const Simulation<2>& sim = session.simulation();
   for (auto it = session.samples().rbegin(); it != session.samples().rend(); ++it) {
     if (it->collision_rate > 0.0) return 0.5 / it->collision_rate;
   }
@@ -208,7 +208,7 @@ double mean_free_time(const RunSession& session) {
 }
 
 void report_collapse(const RunSession& session, const std::string& out) {
-  const Simulation& sim = session.simulation();
+  const Simulation<2>& sim = session.simulation();
   const CollapseReport& c = sim.collapse();
   const double free_time = mean_free_time(session);
   const std::int64_t frames = session.snapshot_frames();
@@ -244,7 +244,7 @@ int run(const RunOptions& options) {
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }
-    const Simulation& sim = session->simulation();
+    const Simulation<2>& sim = session->simulation();
     fmt::print("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n",
                reason == StopReason::kInterrupted ? "stopped" : "finished", stop_text(reason), sim.time(),
                sim.collisions_per_particle(), sim.collisions(), summary["wall_seconds"].get<double>(),

@@ -58,7 +58,7 @@ void take_from_config(const CLI::App& cmd, Opts& o) {
   if (!given("--box-y")) o.box_y = c.system.length_y;
   const bool geometry_given = given("--area-fraction") || given("--particles") ||
                               given("--box-x") || given("--box-y");
-  if (!given("--area-fraction")) o.area_fraction = c.area_fraction;
+  if (!given("--area-fraction")) o.area_fraction = c.packing_fraction;
   // The config's σ holds only while N, ν and the box are its own; otherwise σ follows from them.
   if (!given("--diameter") && !geometry_given) o.diameter = c.system.diameter;
   if (!given("--shear-rate")) {

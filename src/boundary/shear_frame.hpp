@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "geometry/vec2.hpp"
+#include "geometry/vec.hpp"
 
 namespace granule {
 

@@ -28,8 +28,11 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
   const double s_min = request.sheared ? 0.5 * lx / ly : 0.0;
   const double min_width = sigma * std::sqrt(1.0 + s_min * s_min);
   const double min_height = sigma;
+  const bool three_d = request.dimension == 3;
+  const double lz = three_d ? request.length_z : 0.0;
   const int max_nx = static_cast<int>(std::floor(lx / min_width));
   const int max_ny = static_cast<int>(std::floor(ly / min_height));
+  const int max_nz = three_d ? static_cast<int>(std::floor(lz / min_height)) : 1;
 
   CellGrid grid;
   if (request.forced) {
@@ -42,23 +45,27 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
                                 "] × [" + std::to_string(kMinCells) + ", " +
                                 std::to_string(max_ny) + "] for this box and diameter"};
     }
+    if (three_d) return {std::nullopt, "engine.cells is for 2D runs only: 3D grids are always chosen automatically"};
   } else {
-    if (max_nx < kMinCells || max_ny < kMinCells) {
+    if (max_nx < kMinCells || max_ny < kMinCells || (three_d && max_nz < kMinCells)) {
       return {std::nullopt,
-              "the box " + fmt_double(lx) + " × " + fmt_double(ly) +
+              "the box " + fmt_double(lx) + " × " + fmt_double(ly) + (three_d ? " × " + fmt_double(lz) : "") +
                   " is too small for the cell grid: it needs at least 3 cells of size ≥ " +
-                  fmt_double(min_width) + " × " + fmt_double(min_height) +
-                  " per direction (diameter " + fmt_double(request.diameter) +
+                  fmt_double(min_width) + " × " + fmt_double(min_height) + (three_d ? " × " + fmt_double(min_height) : "") +
+                  " per direction (largest diameter " + fmt_double(request.diameter) +
                   "); enlarge system.box or reduce the diameter"};
     }
-    const double cell_area =
-        request.particles_per_cell * lx * ly / static_cast<double>(std::max<std::int64_t>(1, request.particles));
-    const double side = std::sqrt(cell_area);
+    const double volume = lx * ly * (three_d ? lz : 1.0);
+    const double cell_volume =
+        request.particles_per_cell * volume / static_cast<double>(std::max<std::int64_t>(1, request.particles));
+    const double side = three_d ? std::cbrt(cell_volume) : std::sqrt(cell_volume);
     grid.nx = std::clamp(static_cast<int>(std::floor(lx / side)), kMinCells, max_nx);
     grid.ny = std::clamp(static_cast<int>(std::floor(ly / side)), kMinCells, max_ny);
+    if (three_d) grid.nz = std::clamp(static_cast<int>(std::floor(lz / side)), kMinCells, max_nz);
   }
   grid.width = lx / grid.nx;
   grid.height = ly / grid.ny;
+  if (three_d) grid.depth = lz / grid.nz;
   if (request.sheared) {
     // Largest strain at which a contact pair still spans at most one column: σ√(1+s²) ≤ width.
     const double ratio = grid.width / sigma;
@@ -69,7 +76,7 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
   return {grid, {}};
 }
 
-void CellLists::reset(int cells, std::int64_t particles) {
+void CellLists::reset(std::int64_t cells, std::int64_t particles) {
   head_.assign(static_cast<std::size_t>(cells), kEnd);
   next_.assign(static_cast<std::size_t>(particles), kEnd);
 }
@@ -92,7 +99,8 @@ void CellLists::save(StateArchive& archive, const std::string& prefix) const {
   archive.put(prefix + "next", next_);
 }
 
-void CellLists::restore(const StateArchive& archive, const std::string& prefix, int cells, std::int64_t particles) {
+void CellLists::restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells,
+                        std::int64_t particles) {
   head_ = archive.get<std::int32_t>(prefix + "head");
   next_ = archive.get<std::int32_t>(prefix + "next");
   const auto valid = [&](std::int32_t id) { return id == kEnd || (id >= 0 && id < particles); };

@@ -1,5 +1,7 @@
-// The simulation's cell grid on the sheared frame (ξ, y) and its per-cell particle lists
-// (thesis Appendix A.1: collisions are searched in the 3×3 block of cells around a particle).
+// The simulation's cell grid on the sheared frame (ξ, y[, z]) and its per-cell particle lists
+// (thesis Appendix A.1: collisions are searched in the 3×3 block of cells around a particle, the
+// 3×3×3 block in 3D).  Cell ids are 32-bit per particle (4 B/particle less than 64-bit ids; the
+// configuration refuses grids of 2³¹ cells or more) and computed in 64-bit arithmetic.
 #pragma once
 
 #include <cstdint>
@@ -19,11 +21,18 @@ struct CellGrid {
   // Lees–Edwards: the grid is re-aligned whenever |strain| reaches strain_period/2; the period
   // is a multiple of L_x/L_y so that the sheared frame stays exactly periodic (shear_frame.hpp).
   double strain_period = 0.0;
+  int nz = 1;           // layers in z (1 in 2D)
+  double depth = 0.0;   // layer depth (3D)
 
-  int cell_count() const { return nx * ny; }
-  int index(int column, int row) const { return row * nx + column; }
-  int column_of(int cell) const { return cell % nx; }
-  int row_of(int cell) const { return cell / nx; }
+  std::int64_t cell_count() const { return static_cast<std::int64_t>(nx) * ny * nz; }
+  std::int32_t index(int column, int row, int layer = 0) const {
+    return static_cast<std::int32_t>((static_cast<std::int64_t>(layer) * ny + row) * nx + column);
+  }
+  int column_of(std::int32_t cell) const { return cell % nx; }
+  int row_of(std::int32_t cell) const { return (cell / nx) % ny; }
+  int layer_of(std::int32_t cell) const { return cell / nx / ny; }
+  int count(int axis) const { return axis == 0 ? nx : (axis == 1 ? ny : nz); }
+  double size(int axis) const { return axis == 0 ? width : (axis == 1 ? height : depth); }
 };
 
 struct CellGridRequest {
@@ -33,12 +42,15 @@ struct CellGridRequest {
   std::int64_t particles = 0;
   bool sheared = false;
   double particles_per_cell = 1.0;           // target mean occupancy (thesis A.2: 1–2 is optimal)
-  std::optional<std::pair<int, int>> forced;  // user override [nx, ny]
+  std::optional<std::pair<int, int>> forced;  // user override [nx, ny] (2D)
+  int dimension = 2;
+  double length_z = 1.0;
 };
 
 // The grid for a box, or an explanation of why none fits (fewer than 3 cells per direction,
 // or a forced grid with cells narrower than a disk can reach).  Contact pairs must always lie in
-// neighbouring cells: rows at least σ high, columns at least σ√(1 + s_max²) wide in ξ.
+// neighbouring cells: rows (and layers) at least σ high, columns at least σ√(1 + s_max²) wide in
+// ξ, with σ the largest diameter.
 struct CellGridChoice {
   std::optional<CellGrid> grid;
   std::string error;
@@ -48,7 +60,7 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request);
 // Singly linked particle lists per cell: a head per cell, a next per particle (plain ids).
 class CellLists {
  public:
-  void reset(int cells, std::int64_t particles);
+  void reset(std::int64_t cells, std::int64_t particles);
   void insert(std::int32_t particle, std::int32_t cell);
   void remove(std::int32_t particle, std::int32_t cell);
   std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
@@ -57,7 +69,7 @@ class CellLists {
   // The order within each list decides the order of candidate partners, hence ties: a
   // checkpoint keeps it exactly.
   void save(StateArchive& archive, const std::string& prefix) const;
-  void restore(const StateArchive& archive, const std::string& prefix, int cells, std::int64_t particles);
+  void restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells, std::int64_t particles);
 
   static constexpr std::int32_t kEnd = -1;
 

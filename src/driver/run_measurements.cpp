@@ -15,7 +15,7 @@ RunMeasurements::RunMeasurements(const RunConfig& config, std::string out_dir)
       frame_{config.system.length_x, config.system.length_y, config.system.shear_velocity},
       grid_{config.fields.cells.first, config.fields.cells.second, config.system.length_x, config.system.length_y} {}
 
-void RunMeasurements::set_up(Simulation& sim) {
+void RunMeasurements::set_up(Simulation<2>& sim) {
   const SystemParams& s = config_.system;
   if (config_.fields.enabled) {
     // By default a fields frame goes with every snapshot.
@@ -50,7 +50,7 @@ FieldsMetadata RunMeasurements::fields_metadata() const {
           kVersion};
 }
 
-void RunMeasurements::start(Simulation& sim) {
+void RunMeasurements::start(Simulation<2>& sim) {
   set_up(sim);
   if (config_.fields.enabled) {
     fields_schedule_.advance(sim);
@@ -63,7 +63,7 @@ void RunMeasurements::start(Simulation& sim) {
   }
 }
 
-void RunMeasurements::continue_from_frame(Simulation& sim, std::int64_t fields_frames, bool frame_written) {
+void RunMeasurements::continue_from_frame(Simulation<2>& sim, std::int64_t fields_frames, bool frame_written) {
   set_up(sim);
   interval_start_t_ = sim.time();
   interval_start_c_ = sim.collisions_per_particle();
@@ -79,7 +79,7 @@ void RunMeasurements::continue_from_frame(Simulation& sim, std::int64_t fields_f
   }
 }
 
-void RunMeasurements::resume(Simulation& sim, const StateArchive& archive, const std::string& prefix) {
+void RunMeasurements::resume(Simulation<2>& sim, const StateArchive& archive, const std::string& prefix) {
   set_up(sim);
   if (config_.fields.enabled) {
     fields_schedule_.restore(archive, prefix + "fields_schedule/");
@@ -139,7 +139,7 @@ std::int64_t RunMeasurements::next_collisions() const {
 
 double RunMeasurements::next_time() const { return fields_writer_ ? fields_schedule_.next_time : kInf; }
 
-void RunMeasurements::after_step(Simulation& sim, bool final) {
+void RunMeasurements::after_step(Simulation<2>& sim, bool final) {
   if (density_ && !statistics_started_ && sim.collisions() >= statistics_start_) {
     statistics_started_ = true;
     statistics_from_t_ = sim.time();
@@ -169,7 +169,7 @@ void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisi
   last_sample_collisions_ = collisions;
 }
 
-void RunMeasurements::write_fields_frame(const Simulation& sim) {
+void RunMeasurements::write_fields_frame(const Simulation<2>& sim) {
   const bool subtract = config_.fields.subtract_shear_profile;
   const ParticleState state = sim.state();
   frame_.shear_velocity = sim.image_velocity();
@@ -195,7 +195,7 @@ void RunMeasurements::write_fields_frame(const Simulation& sim) {
   interval_start_c_ = frame.c;
 }
 
-nlohmann::json RunMeasurements::finish(const Simulation& sim) {
+nlohmann::json RunMeasurements::finish(const Simulation<2>& sim) {
   nlohmann::json j = nlohmann::json::object();
   if (fields_writer_) {
     fields_writer_->finish();

@@ -28,7 +28,7 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
   // The elastic pre-run of thesis §1.4.2; the restitution is switched on when it ends.
   SystemParams elastic = config.system;
   elastic.restitution = 1.0;
-  sim_ = std::make_unique<Simulation>(elastic, grid, initial, clock);
+  sim_ = std::make_unique<Simulation<2>>(elastic, grid, initial, clock);
   equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
@@ -36,7 +36,7 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
 
 RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint)
     : config_(config), grid_(grid), out_(std::move(out)) {
-  sim_ = std::make_unique<Simulation>(config.system, grid, checkpoint, "engine/");
+  sim_ = std::make_unique<Simulation<2>>(config.system, grid, checkpoint, "engine/");
   equilibrate_collisions_ = checkpoint.integer("run/equilibrate_collisions");
   earlier_wall_seconds_ = checkpoint.scalar("run/wall_seconds");
   segment_start_collisions_ = sim_->collisions();
@@ -48,7 +48,7 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
 RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start)
     : config_(config), grid_(grid), out_(std::move(out)) {
   const SystemParams& system = config.system;
-  sim_ = std::make_unique<Simulation>(system, grid, start.frame.particles, start.frame.clock);
+  sim_ = std::make_unique<Simulation<2>>(system, grid, start.frame.particles, start.frame.clock);
   segment_start_collisions_ = sim_->collisions();
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
@@ -79,7 +79,7 @@ void RunSession::start_production() {
   samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
                                           sim_->shear_offset()));
   snapshots_ = std::make_unique<SnapshotWriter>(
-      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.area_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
+      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.packing_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
                                                config_.seed, kVersion});
   append_snapshot();
   measurements_ = std::make_unique<RunMeasurements>(config_, out_);
@@ -165,7 +165,7 @@ void RunSession::take_sample() {
 
 void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }
 
-void RunSession::on_stop(Simulation&) {
+void RunSession::on_stop(Simulation<2>&) {
   if (snapshotting_.due(*sim_)) {
     append_snapshot();
     snapshotting_.advance(*sim_);

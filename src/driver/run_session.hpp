@@ -52,7 +52,7 @@ class RunSession final : public StopClient {
   // The checkpoint, the end-of-run outputs and summary.json.  Returns the summary.
   nlohmann::json finish(StopReason reason);
 
-  const Simulation& simulation() const { return *sim_; }
+  const Simulation<2>& simulation() const { return *sim_; }
   const std::vector<DiagnosticsSample>& samples() const { return samples_; }
   std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
   bool measurements_enabled() const { return measurements_ != nullptr; }
@@ -62,7 +62,7 @@ class RunSession final : public StopClient {
   }
   double next_time() const override { return std::min(sampling_.next_time, snapshotting_.next_time); }
   // Samples and snapshots due at the present stop.
-  void on_stop(Simulation& sim) override;
+  void on_stop(Simulation<2>& sim) override;
 
  private:
   bool in_production() const { return diagnostics_ != nullptr; }
@@ -78,7 +78,7 @@ class RunSession final : public StopClient {
   RunConfig config_;
   CellGrid grid_;
   std::string out_;
-  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<Simulation<2>> sim_;
   std::int64_t equilibrate_collisions_ = 0;
   std::int64_t until_collisions_ = kNoLimit;
   double until_time_ = kInf;

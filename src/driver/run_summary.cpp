@@ -16,14 +16,14 @@ const char* stop_text(StopReason reason) {
   return "unknown";
 }
 
-nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, const CellGrid& grid, StopReason reason,
+nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, const CellGrid& grid, StopReason reason,
                             const RunFacts& facts, const std::vector<DiagnosticsSample>& samples) {
   const SystemParams& s = config.system;
   nlohmann::json j;
   j["version"] = kVersion;
   j["particles"] = s.particles;
   j["diameter"] = s.diameter;
-  j["area_fraction"] = config.area_fraction;
+  j["area_fraction"] = config.packing_fraction;
   j["box"] = {s.length_x, s.length_y};
   j["restitution"] = s.restitution;
   j["tc_duration"] = s.tc_duration;
@@ -67,9 +67,9 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation& sim, cons
         {"temperature_thesis_cells_measured", mean(&DiagnosticsSample::temperature_thesis_cells)},
         {"temperature_global_measured", mean(&DiagnosticsSample::temperature_global)},
         {"measured_over_c", {samples[from].c, samples.back().c}},
-        {"temperature_tan_fit_eq_3_1", theory::steady_shear_temperature_tan_fit(s.restitution, gamma, s.diameter, config.area_fraction)},
+        {"temperature_tan_fit_eq_3_1", theory::steady_shear_temperature_tan_fit(s.restitution, gamma, s.diameter, config.packing_fraction)},
         {"temperature_jenkins_richman_eq_3_2",
-         theory::steady_shear_temperature_jenkins_richman(s.restitution, gamma, s.diameter, config.area_fraction)},
+         theory::steady_shear_temperature_jenkins_richman(s.restitution, gamma, s.diameter, config.packing_fraction)},
     };
   }
   return j;

@@ -4,7 +4,7 @@
 
 namespace granule::driver {
 
-StopReason advance_to_next_stop(Simulation& sim, const std::vector<StopClient*>& clients, const StopLimits& limits) {
+StopReason advance_to_next_stop(Simulation<2>& sim, const std::vector<StopClient*>& clients, const StopLimits& limits) {
   std::int64_t collisions = limits.collisions;
   double time = limits.time;
   for (const StopClient* client : clients) {

@@ -22,7 +22,7 @@ class StopClient {
   virtual std::int64_t next_collisions() const = 0;
   virtual double next_time() const = 0;
   // The engine has stopped (at its stop or another client's): act if due.
-  virtual void on_stop(Simulation& sim) = 0;
+  virtual void on_stop(Simulation<2>& sim) = 0;
 };
 
 struct StopLimits {
@@ -32,6 +32,6 @@ struct StopLimits {
 
 // Runs `sim` to the earliest stop of `clients` within `limits`, then calls on_stop of every
 // client in order, unless the run was interrupted (then nothing is written: the caller saves).
-StopReason advance_to_next_stop(Simulation& sim, const std::vector<StopClient*>& clients, const StopLimits& limits);
+StopReason advance_to_next_stop(Simulation<2>& sim, const std::vector<StopClient*>& clients, const StopLimits& limits);
 
 }  // namespace granule::driver

@@ -5,24 +5,30 @@
 
 #include <cstdint>
 
-#include "geometry/vec2.hpp"
+#include "geometry/vec.hpp"
 
 namespace granule {
 
+// d = 2 (disks) or 3 (spheres); positions are lab positions, the shear (images) acts along x
+// across the y boundaries in both.
+template <int D>
 struct CollisionRecord {
   double time = 0.0;             // absolute simulation time of contact
   std::int32_t first = 0;        // disk "1" of thesis Fig 1.3
   std::int32_t second = 0;       // disk "2"
-  Vec2 first_position;           // lab position of disk 1 at contact (inside the box)
-  Vec2 contact_point;            // lab position of the contact point, mapped into the box
-  Vec2 contact_normal;           // k̂: unit vector from disk 1 to (the image of) disk 2
-  Vec2 first_velocity_before;    // lab velocity of disk 1 before the collision
-  Vec2 second_velocity_before;   // lab velocity of disk 2 before the collision (its own)
-  Vec2 relative_velocity;        // v21 = v1 − v2 before the collision (image-shifted)
-  Vec2 first_velocity_after;     // lab velocity of disk 1 after the collision
-  Vec2 second_velocity_after;    // lab velocity of disk 2 after the collision (its own, not its image's)
+  Vec<D> first_position;           // lab position of disk 1 at contact (inside the box)
+  Vec<D> contact_point;            // lab position of the contact point, mapped into the box
+  Vec<D> contact_normal;           // k̂: unit vector from disk 1 to (the image of) disk 2
+  Vec<D> first_velocity_before;    // lab velocity of disk 1 before the collision
+  Vec<D> second_velocity_before;   // lab velocity of disk 2 before the collision (its own)
+  Vec<D> relative_velocity;        // v21 = v1 − v2 before the collision (image-shifted)
+  Vec<D> first_velocity_after;     // lab velocity of disk 1 after the collision
+  Vec<D> second_velocity_after;    // lab velocity of disk 2 after the collision (its own, not its image's)
   double impulse = 0.0;          // J·k̂ = (1 + e)/2 (v21·k̂) > 0, momentum given to disk 2
+                                 // ((1 + e) μ (v21·k̂) for masses m1, m2)
   double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
+  double first_mass = 1.0;       // m1, m2 (1 unless the run is polydisperse)
+  double second_mass = 1.0;
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves
                                  // at v_x + image_y U relative to disk 2 itself (§1.4.2)
   double image_velocity_x = 0.0; // that image's velocity relative to disk 2: image_y U at contact
@@ -39,10 +45,11 @@ struct BoundaryCrossingRecord {
   double velocity_x_after = 0.0;
 };
 
+template <int D>
 class EventObserver {
  public:
   virtual ~EventObserver() = default;
-  virtual void on_collision(const CollisionRecord& record) = 0;
+  virtual void on_collision(const CollisionRecord<D>& record) = 0;
   virtual void on_boundary_crossing(const BoundaryCrossingRecord&) {}
 };
 

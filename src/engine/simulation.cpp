@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
@@ -19,8 +20,33 @@ constexpr std::int64_t kRebaseEventsPerParticle = 16;
 inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
-Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
-                       const ClockState& clock)
+template <int D>
+Vec<D> Simulation<D>::position_now(std::int32_t i) const {
+  const double dt = t_now_ - t_[at(i)];
+  Vector r;
+  for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + velocity_[a][at(i)] * dt;
+  return r;
+}
+
+template <int D>
+Vec<D> Simulation<D>::velocity(std::int32_t i) const {
+  Vector v;
+  for (int a = 0; a < D; ++a) v[a] = velocity_[a][at(i)];
+  return v;
+}
+
+template <int D>
+std::array<int, D> Simulation<D>::cell_coordinates(std::int32_t cell) const {
+  if constexpr (D == 2) {
+    return {grid_.column_of(cell), grid_.row_of(cell)};
+  } else {
+    return {grid_.column_of(cell), grid_.row_of(cell), grid_.layer_of(cell)};
+  }
+}
+
+template <int D>
+Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
+                          const ClockState& clock)
     : params_(params),
       grid_(grid),
       frame_{params.length_x, params.length_y, 0.0},
@@ -51,41 +77,48 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const P
   collapse_detector_.reset(collapse_window(), t_now_);
 }
 
-void Simulation::allocate_arrays() {
+template <int D>
+void Simulation<D>::allocate_arrays() {
   const auto n = static_cast<std::size_t>(params_.particles);
   count_.assign(n, 0);
   cell_.assign(n, 0);
   kind_.assign(n, EventKind::kNone);
   partner_.assign(n, -1);
   partner_count_.assign(n, 0);
-  // Kept only where U changes over and over (a time-dependent protocol): +8 B per disk and one
+  // Kept only where U changes over and over (a time-dependent protocol): +8 B per particle and one
   // store per prediction that a constant drive does not pay.
   if (!protocol_.constant()) collision_time_.assign(n, kInf);
 }
 
-double Simulation::bytes_per_particle() const {
+template <int D>
+double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  const std::size_t total = bytes(x_) + bytes(y_) + bytes(vx_) + bytes(vy_) + bytes(t_) +
-                            bytes(count_) + bytes(cell_) + bytes(last_collision_) + bytes(kind_) +
-                            bytes(partner_) + bytes(partner_count_) + bytes(collision_time_) + lists_.bytes() + heap_.bytes();
+  std::size_t total = bytes(t_) + bytes(diameter_) + bytes(mass_) + bytes(count_) + bytes(cell_) +
+                      bytes(last_collision_) + bytes(kind_) + bytes(partner_) + bytes(partner_count_) +
+                      bytes(collision_time_) + lists_.bytes() + heap_.bytes();
+  for (int a = 0; a < D; ++a) total += bytes(position_[a]) + bytes(velocity_[a]);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
 
-void Simulation::advance(std::int32_t i) {
+template <int D>
+void Simulation<D>::advance(std::int32_t i) {
   const double dt = t_now_ - t_[at(i)];
-  x_[at(i)] += vx_[at(i)] * dt;
-  y_[at(i)] += vy_[at(i)] * dt;
+  for (int a = 0; a < D; ++a) position_[a][at(i)] += velocity_[a][at(i)] * dt;
   t_[at(i)] = t_now_;
 }
 
-std::int32_t Simulation::cell_of(double x, double y) const {
-  const double xi = frame_.sheared_x(x, y, strain());
+template <int D>
+std::int32_t Simulation<D>::cell_of(const Vector& r) const {
+  const double xi = frame_.sheared_x(r[0], r[1], strain());
   const int column = std::clamp(static_cast<int>(std::floor(xi / grid_.width)), 0, grid_.nx - 1);
-  const int row = std::clamp(static_cast<int>(std::floor(y / grid_.height)), 0, grid_.ny - 1);
-  return grid_.index(column, row);
+  const int row = std::clamp(static_cast<int>(std::floor(r[1] / grid_.height)), 0, grid_.ny - 1);
+  int layer = 0;
+  if constexpr (D == 3) layer = std::clamp(static_cast<int>(std::floor(r[2] / grid_.depth)), 0, grid_.nz - 1);
+  return grid_.index(column, row, layer);
 }
 
-void Simulation::rebase() {
+template <int D>
+void Simulation<D>::rebase() {
   const double delta = t_now_;
   for (auto& t : t_) t -= delta;
   for (auto& t : last_collision_) t -= delta;
@@ -100,51 +133,72 @@ void Simulation::rebase() {
   schedule_realignment();
 }
 
-void Simulation::rebuild() {
+namespace {
+// Into [0, L): the periodic wrap of an axis without shear (z).
+inline void wrap_periodic(double& z, double length) {
+  z -= length * std::floor(z / length);
+  if (z >= length) z = 0.0;
+}
+}  // namespace
+
+template <int D>
+void Simulation<D>::rebuild() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   for (std::int32_t i = 0; i < n; ++i) advance(i);
   rebase();
   const double lx = params_.length_x;
   const double s = strain();
+  auto& x = position_[0];
+  auto& y = position_[1];
   for (std::int32_t i = 0; i < n; ++i) {
-    double& x = x_[at(i)];
-    frame_.wrap_into_box(x, y_[at(i)], vx_[at(i)], s);
+    frame_.wrap_into_box(x[at(i)], y[at(i)], velocity_[0][at(i)], s);
     // Then into [0, L_x) in the sheared abscissa, where the cell grid lives.
-    x -= lx * std::floor(frame_.sheared_x(x, y_[at(i)], s) / lx);
+    x[at(i)] -= lx * std::floor(frame_.sheared_x(x[at(i)], y[at(i)], s) / lx);
+    if constexpr (D == 3) wrap_periodic(position_[2][at(i)], params_.length_z);
   }
   lists_.reset(grid_.cell_count(), params_.particles);
   for (std::int32_t i = 0; i < n; ++i) {
-    cell_[at(i)] = cell_of(x_[at(i)], y_[at(i)]);
+    cell_[at(i)] = cell_of(position_now(i));
     lists_.insert(i, cell_[at(i)]);
   }
   heap_.reset(n);
   for (std::int32_t i = 0; i < n; ++i) predict(i);
 }
 
-void Simulation::load(const ParticleState& state) {
-  x_ = state.x;
-  y_ = state.y;
-  vx_ = state.vx;
-  vy_ = state.vy;
+template <int D>
+void Simulation<D>::load(const ParticleState& state) {
+  if (state.dimension != D) throw std::invalid_argument("the initial state has another dimension than the engine");
+  for (int a = 0; a < D; ++a) {
+    position_[a] = state.position(a);
+    velocity_[a] = state.velocity(a);
+  }
+  diameter_ = state.diameter;
+  mass_ = state.mass;
   t_.assign(state.size(), t_now_);
 }
 
-ParticleState Simulation::state() const {
+template <int D>
+ParticleState Simulation<D>::state() const {
   ParticleState out;
+  out.dimension = D;
+  out.diameter = diameter_;
+  out.mass = mass_;
   out.resize(static_cast<std::size_t>(params_.particles));
   const double s = strain();
   for (std::size_t i = 0; i < out.size(); ++i) {
-    const double dt = t_now_ - t_[i];
-    out.x[i] = x_[i] + vx_[i] * dt;
-    out.y[i] = y_[i] + vy_[i] * dt;
-    out.vx[i] = vx_[i];
-    out.vy[i] = vy_[i];
+    const Vector r = position_now(static_cast<std::int32_t>(i));
+    for (int a = 0; a < D; ++a) {
+      out.position(a)[i] = r[a];
+      out.velocity(a)[i] = velocity_[a][i];
+    }
     frame_.wrap_into_box(out.x[i], out.y[i], out.vx[i], s);
+    if constexpr (D == 3) wrap_periodic(out.z[i], params_.length_z);
   }
   return out;
 }
 
-ClockState Simulation::clock_state() const {
+template <int D>
+ClockState Simulation<D>::clock_state() const {
   ClockState clock;
   clock.time = time();
   clock.strain_reference = t_ref_ - t_now_;
@@ -158,7 +212,8 @@ ClockState Simulation::clock_state() const {
   return clock;
 }
 
-void Simulation::start_production(double restitution) {
+template <int D>
+void Simulation<D>::start_production(double restitution) {
   params_.restitution = restitution;
   clock_base_ = -t_now_;
   collisions_ = 0;
@@ -168,61 +223,64 @@ void Simulation::start_production(double restitution) {
   enter_shear_segment(protocol_.segment_from(0.0));
 }
 
-Simulation::Crossing Simulation::next_crossing(std::int32_t i, double xi, double yi) const {
-  const double vxi = vx_[at(i)];
-  const double vyi = vy_[at(i)];
-  const int cell = cell_[at(i)];
-  const int column = grid_.column_of(cell);
-  const int row = grid_.row_of(cell);
+template <int D>
+typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const Vector& r) const {
+  const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+  const double vyi = velocity_[1][at(i)];
 
   // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
   // b = v_x.
   const double s = strain();
-  const double y_rel = yi - 0.5 * params_.length_y;
-  const double xi0 = xi - s * y_rel;
+  const double y_rel = r[1] - 0.5 * params_.length_y;
+  const double xi0 = r[0] - s * y_rel;
   const double a = -shear_rate_ * vyi;
-  const double b = vxi - shear_rate_ * y_rel - s * vyi;
-  const double left = column * grid_.width;
+  const double b = velocity_[0][at(i)] - shear_rate_ * y_rel - s * vyi;
+  const double left = cell[0] * grid_.width;
   const double right = left + grid_.width;
   double best = first_exit_time(a, b, xi0 - right);
-  EventKind kind = EventKind::kCrossRight;
+  EventKind kind = crossing_through(0, 1);
   if (const double t = first_exit_time(-a, -b, left - xi0); t < best) {
     best = t;
-    kind = EventKind::kCrossLeft;
+    kind = crossing_through(0, 0);
   }
-  if (vyi > 0.0) {
-    if (const double t = std::max(0.0, ((row + 1) * grid_.height - yi) / vyi); t < best) {
-      best = t;
-      kind = EventKind::kCrossUp;
-    }
-  } else if (vyi < 0.0) {
-    if (const double t = std::max(0.0, (row * grid_.height - yi) / vyi); t < best) {
-      best = t;
-      kind = EventKind::kCrossDown;
+  // The other axes are not sheared: straight flight between planes.
+  for (int axis = 1; axis < D; ++axis) {
+    const double v = velocity_[axis][at(i)];
+    const double size = grid_.size(axis);
+    if (v > 0.0) {
+      if (const double t = std::max(0.0, ((cell[axis] + 1) * size - r[axis]) / v); t < best) {
+        best = t;
+        kind = crossing_through(axis, 1);
+      }
+    } else if (v < 0.0) {
+      if (const double t = std::max(0.0, (cell[axis] * size - r[axis]) / v); t < best) {
+        best = t;
+        kind = crossing_through(axis, 0);
+      }
     }
   }
   if (best == kInf) kind = EventKind::kNone;
   return {kind, best};
 }
 
-Simulation::Prediction Simulation::next_event(std::int32_t i) const {
-  const double dt_i = t_now_ - t_[at(i)];
-  const double vxi = vx_[at(i)];
-  const double vyi = vy_[at(i)];
-  const double xi = x_[at(i)] + vxi * dt_i;
-  const double yi = y_[at(i)] + vyi * dt_i;
-  const Crossing crossing = next_crossing(i, xi, yi);
+template <int D>
+typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) const {
+  const Vector ri = position_now(i);
+  const Vector vi = velocity(i);
+  const Crossing crossing = next_crossing(i, ri);
 
-  // Collisions with the disks of the 3×3 block of cells.
-  const double sigma = params_.diameter;
+  // Collisions with the particles of the 3^D block of cells.
   std::int32_t partner = -1;
   double best = kInf;
-  for_each_neighbour(i, [&](std::int32_t j, double shift_x, const ImageShift& row_shift) {
+  for_each_neighbour(i, [&](std::int32_t j, const Vector& shift, double shift_vx) {
     const double dt_j = t_now_ - t_[at(j)];
-    const Vec2 rel_position{x_[at(j)] + vx_[at(j)] * dt_j + shift_x - xi,
-                            y_[at(j)] + vy_[at(j)] * dt_j + row_shift.position.y - yi};
-    const Vec2 rel_velocity{vx_[at(j)] + row_shift.velocity_x - vxi, vy_[at(j)] - vyi};
-    if (const double t = collision_time(rel_position, rel_velocity, sigma); t < best) {
+    Vector rel_position;
+    Vector rel_velocity;
+    for (int a = 0; a < D; ++a) {
+      rel_position[a] = position_[a][at(j)] + velocity_[a][at(j)] * dt_j + shift[a] - ri[a];
+      rel_velocity[a] = a == 0 ? velocity_[a][at(j)] + shift_vx - vi[a] : velocity_[a][at(j)] - vi[a];
+    }
+    if (const double t = collision_time(rel_position, rel_velocity, contact_distance(i, j)); t < best) {
       best = t;
       partner = j;
     }
@@ -230,7 +288,8 @@ Simulation::Prediction Simulation::next_event(std::int32_t i) const {
   return {crossing, partner, best};
 }
 
-void Simulation::predict(std::int32_t i) {
+template <int D>
+void Simulation<D>::predict(std::int32_t i) {
   const Prediction next = next_event(i);
   kind_[at(i)] = next.kind();
   partner_[at(i)] = next.partner;
@@ -239,106 +298,107 @@ void Simulation::predict(std::int32_t i) {
   heap_.update(i, t_now_ + next.delay());
 }
 
-void Simulation::execute_crossing(std::int32_t i, EventKind kind) {
+template <int D>
+void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   advance(i);
-  const int old_cell = cell_[at(i)];
-  int column = grid_.column_of(old_cell);
-  int row = grid_.row_of(old_cell);
-  switch (kind) {
-    case EventKind::kCrossRight:
-      if (++column == grid_.nx) {
-        column = 0;
-        x_[at(i)] -= params_.length_x;
-      }
-      break;
-    case EventKind::kCrossLeft:
-      if (--column < 0) {
-        column = grid_.nx - 1;
-        x_[at(i)] += params_.length_x;
-      }
-      break;
-    case EventKind::kCrossUp:
-      if (++row == grid_.ny) {
-        // Out through the top, in at the bottom from the image below (thesis §1.4.2).
-        row = 0;
-        enter_from_image(i, -1);
-      }
-      break;
-    case EventKind::kCrossDown:
-      if (--row < 0) {
-        row = grid_.ny - 1;
-        enter_from_image(i, 1);
-      }
-      break;
-    default:
-      break;
+  const std::int32_t old_cell = cell_[at(i)];
+  std::array<int, D> cell = cell_coordinates(old_cell);
+  const int axis = crossing_axis(kind);
+  const int direction = crossing_direction(kind);
+  int& c = cell[static_cast<std::size_t>(axis)];
+  c += direction;
+  if (c < 0 || c >= grid_.count(axis)) {
+    // Out through a face of the box: in from the image on the other side.
+    c -= direction * grid_.count(axis);
+    if (axis == 1) {
+      enter_from_image(i, -direction);  // the Lees–Edwards rule (thesis §1.4.2)
+    } else {
+      position_[axis][at(i)] -= image_across(axis, direction, strain()).position[axis];
+    }
   }
-  const int new_cell = grid_.index(column, row);
+  std::int32_t new_cell = 0;
+  if constexpr (D == 2) {
+    new_cell = grid_.index(cell[0], cell[1]);
+  } else {
+    new_cell = grid_.index(cell[0], cell[1], cell[2]);
+  }
   lists_.remove(i, old_cell);
   lists_.insert(i, new_cell);
   cell_[at(i)] = new_cell;
   predict(i);
 }
 
-bool Simulation::execute_collision(std::int32_t i, std::int32_t j) {
+template <int D>
+bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   advance(i);
   advance(j);
   const double s = strain();
-  const auto [iy, shift] = nearest_image(x_[at(j)] - x_[at(i)], y_[at(j)] - y_[at(i)]);
+  const Vector ri = position_now(i);
+  const auto [iy, shift] = nearest_image(position_now(j) - ri);
 
-  const Vec2 r{x_[at(j)] + shift.position.x - x_[at(i)], y_[at(j)] + shift.position.y - y_[at(i)]};
-  const Vec2 v1{vx_[at(i)], vy_[at(i)]};
-  const Vec2 v2{vx_[at(j)] + shift.velocity_x, vy_[at(j)]};
+  Vector r;
+  for (int a = 0; a < D; ++a) r[a] = position_[a][at(j)] + shift.position[a] - position_[a][at(i)];
+  const Vector v1 = velocity(i);
+  Vector v2 = velocity(j);
+  v2[0] += shift.velocity_x;
   // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
   // round-off; a pair that is no longer approaching must not collide.
   if (dot(r, v2 - v1) >= 0.0) {
     predict(i);
     return false;
   }
-  const Vec2 k_hat = (1.0 / norm(r)) * r;
-  double e = params_.restitution;
-  if (!last_collision_.empty()) {
-    const double tc = params_.tc_duration;
-    if (t_now_ - last_collision_[at(i)] < tc || t_now_ - last_collision_[at(j)] < tc) e = 1.0;
+  const Vector k_hat = (1.0 / norm(r)) * r;
+  const CollisionLaw law = collision_law();
+  double e = law.restitution;
+  if (law.keeps_history()) {
+    e = law.restitution_at(t_now_, last_collision_[at(i)], last_collision_[at(j)]);
     last_collision_[at(i)] = t_now_;
     last_collision_[at(j)] = t_now_;
   }
-  const PostCollisionVelocities after = collide(v1, v2, k_hat, e);
-  vx_[at(i)] = after.v1.x;
-  vy_[at(i)] = after.v1.y;
-  vx_[at(j)] = after.v2.x - shift.velocity_x;
-  vy_[at(j)] = after.v2.y;
+  const double m1 = mass_.empty() ? 1.0 : mass_[at(i)];
+  const double m2 = mass_.empty() ? 1.0 : mass_[at(j)];
+  const PostCollisionVelocities<D> after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
+  for (int a = 0; a < D; ++a) {
+    velocity_[a][at(i)] = after.v1[a];
+    velocity_[a][at(j)] = a == 0 ? after.v2[a] - shift.velocity_x : after.v2[a];
+  }
   ++count_[at(i)];
   ++count_[at(j)];
   ++collisions_;
 
   if (!observers_.empty()) {
-    CollisionRecord record;
+    CollisionRecord<D> record;
     record.time = time();
     record.first = i;
     record.second = j;
-    record.first_position = {x_[at(i)], y_[at(i)]};
-    record.contact_point = record.first_position + (0.5 * params_.diameter) * k_hat;
+    record.first_position = ri;
+    const double radius = 0.5 * (diameter_.empty() ? params_.diameter : diameter_[at(i)]);
+    record.contact_point = record.first_position + radius * k_hat;
     double unused_vx = 0.0;
-    frame_.wrap_into_box(record.contact_point.x, record.contact_point.y, unused_vx, s);
+    frame_.wrap_into_box(record.contact_point[0], record.contact_point[1], unused_vx, s);
+    if constexpr (D == 3) wrap_periodic(record.contact_point[2], params_.length_z);
     record.first_velocity_before = v1;
-    record.second_velocity_before = {v2.x - shift.velocity_x, v2.y};
+    record.second_velocity_before = v2;
+    record.second_velocity_before[0] = v2[0] - shift.velocity_x;
     record.first_velocity_after = after.v1;
-    record.second_velocity_after = {vx_[at(j)], vy_[at(j)]};
+    record.second_velocity_after = velocity(j);
     record.contact_normal = k_hat;
     record.relative_velocity = v1 - v2;
-    record.impulse = normal_impulse(v1 - v2, k_hat, e);
+    record.impulse = mass_.empty() ? normal_impulse(v1 - v2, k_hat, e) : normal_impulse(v1 - v2, k_hat, e, m1, m2);
     record.restitution = e;
+    record.first_mass = m1;
+    record.second_mass = m2;
     record.image_y = iy;
     record.image_velocity_x = shift.velocity_x;
-    for (EventObserver* observer : observers_) observer->on_collision(record);
+    for (EventObserver<D>* observer : observers_) observer->on_collision(record);
   }
   predict(i);
   predict(j);
   return true;
 }
 
-StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
+template <int D>
+StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) {
   const std::int64_t rebase_interval = kRebaseEventsPerParticle * params_.particles;
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
   while (true) {
@@ -399,12 +459,16 @@ StopReason Simulation::run(double until_time, std::int64_t until_collisions) {
     }
     if (collided) {
       if (collapse_detector_.on_collision(t_now_)) {
-        collapse_ = {time(), i, j, {x_[at(i)], y_[at(i)]}};
+        const Vector where = position_now(i);
+        collapse_ = {time(), i, j, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};
         return StopReason::kInelasticCollapse;
       }
       if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
     }
   }
 }
+
+template class Simulation<2>;
+template class Simulation<3>;
 
 }  // namespace granule

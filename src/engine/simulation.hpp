@@ -1,5 +1,6 @@
-// The event loop of the thesis's Appendix A: one pending event per particle (its earliest
-// collision or cell crossing) in an indexed heap; lazy free flight with per-particle local
+// The event loop of the thesis's Appendix A for disks (D = 2) and spheres (D = 3), monodisperse
+// or polydisperse: one pending event per particle (its earliest collision or cell crossing) in an
+// indexed heap; lazy free flight with per-particle local
 // times; stale events caught by collision counters; periodic re-basing of the clock; a sheared
 // cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp); and a time-
 // dependent image velocity U(t) in constant segments (boundary/shear_protocol.hpp), its changes
@@ -7,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <csignal>
 #include <cstdint>
 #include <limits>
@@ -23,6 +25,7 @@
 #include "events/event.hpp"
 #include "events/event_heap.hpp"
 #include "events/timed_actions.hpp"
+#include "physics/collision_law.hpp"
 
 namespace granule {
 
@@ -38,13 +41,21 @@ struct CollapseReport {
   double time = 0.0;
   std::int32_t first = -1;
   std::int32_t second = -1;
-  Vec2 position;
+  Vec3 position;  // z = 0 in 2D
 };
 
 // The trajectory depends only on the initial state, the parameters and the grid: never on how
 // often run() is stopped, on observers, or on reading the state (tested, tests/validation).
+// D is fixed at compile time (the stencil, the crossings and the vectors unroll); the command
+// line picks the instantiation from system.dimension.  Flow along x, gradient along y (the
+// Lees–Edwards images sit above and below in y), z plainly periodic.
+template <int D>
 class Simulation {
+  static_assert(D == 2 || D == 3, "disks or spheres");
+
  public:
+  using Vector = Vec<D>;
+
   // Start from lab positions and velocities free of overlaps; `clock` places the start on the
   // time line of an earlier run (a restart from a snapshot frame: same physics, new round-off).
   Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
@@ -63,8 +74,9 @@ class Simulation {
   // (signal handlers set it); nullptr switches the check off.
   void set_interrupt_flag(const volatile std::sig_atomic_t* flag) { interrupt_ = flag; }
 
-  // Lab positions (x ∈ [0, L_x), y ∈ [0, L_y)) and velocities at the current time, extrapolated
-  // from each disk's last event without touching the engine.
+  // Lab positions (x ∈ [0, L_x), y ∈ [0, L_y), z ∈ [0, L_z)) and velocities at the current time,
+  // extrapolated from each particle's last event without touching the engine; with the
+  // per-particle diameters and masses of a polydisperse run.
   ParticleState state() const;
   ClockState clock_state() const;
 
@@ -75,10 +87,10 @@ class Simulation {
   // Checks every invariant of the engine — no overlaps beyond round-off, each disk in the cell
   // its position gives, lists and heap consistent, every pending event still valid and not
   // later than a fresh prediction — and throws std::logic_error describing the first violation.
-  // O(N) with the 3×3 stencil; the GRANULE_PARANOID build runs it at every re-base.
+  // O(N) with the 3^D stencil; the GRANULE_PARANOID build runs it at every re-base.
   void check_invariants() const;
 
-  void add_observer(EventObserver* observer) { observers_.push_back(observer); }
+  void add_observer(EventObserver<D>* observer) { observers_.push_back(observer); }
 
   double time() const { return clock_base_ + t_now_; }
   // Absolute time of the earliest pending event (+inf when nothing will happen).
@@ -113,7 +125,8 @@ class Simulation {
   void advance(std::int32_t i);
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
-  // Disk i leaves the box and comes in from the image `image_y` rows away (Lees–Edwards rule).
+  // Particle i leaves the box through the top (image_y = −1: it comes in from the image below) or
+  // the bottom (+1), by the Lees–Edwards rule.
   void enter_from_image(std::int32_t i, int image_y);
   // Returns true if a physical collision was executed.
   bool execute_collision(std::int32_t i, std::int32_t j);
@@ -126,17 +139,26 @@ class Simulation {
   // the boundary change, collisions inside the box do not (only they are kept, re-predicted).
   void change_image_velocity(double velocity);
   void repredict_after_shear_change();
-  std::int32_t cell_of(double x, double y) const;
+  std::int32_t cell_of(const Vector& position) const;
+  // The cell coordinates (column, row, layer) of a cell id.
+  std::array<int, D> cell_coordinates(std::int32_t cell) const;
+  Vector position_now(std::int32_t i) const;
+  Vector velocity(std::int32_t i) const;
+  CollisionLaw collision_law() const { return {params_.restitution, params_.tc_duration}; }
+  // Contact distance σ_ij = (σ_i + σ_j)/2 (σ for a monodisperse run).
+  double contact_distance(std::int32_t i, std::int32_t j) const {
+    return diameter_.empty() ? params_.diameter : 0.5 * (diameter_[static_cast<std::size_t>(i)] + diameter_[static_cast<std::size_t>(j)]);
+  }
   // The earliest event of particle i from the current state (kind, partner, delay), without
   // storing it: predict() stores it, check_invariants() compares with it.
   // Both parts are kept: after a change of U only the crossing needs recomputing.
   struct Crossing {
-    EventKind kind;  // kNone when the disk never leaves its cell
+    EventKind kind;  // kNone when the particle never leaves its cell
     double delay;
   };
   struct Prediction {
     Crossing crossing;
-    std::int32_t partner;    // the earliest collision in the 3×3 block (−1: none)
+    std::int32_t partner;    // the earliest collision in the 3^D block (−1: none)
     double collision_delay;  // +inf when none
     EventKind kind() const {
       return collision_delay < crossing.delay ? EventKind::kCollision : crossing.kind;
@@ -144,19 +166,27 @@ class Simulation {
     double delay() const { return std::min(collision_delay, crossing.delay); }
   };
   Prediction next_event(std::int32_t i) const;
-  // The first cell face disk i (now at xi, yi) reaches.
-  Crossing next_crossing(std::int32_t i, double xi, double yi) const;
-  // Calls visit(j, shift_x, row_shift) for every disk j ≠ i of the 3×3 block of cells around
-  // i's cell, with the image shift that brings j next to i.  The sheared frame is plainly
-  // periodic, so images across the boundaries follow from the cell offsets alone.
+  // The first cell face particle i (now at `position`) reaches.
+  Crossing next_crossing(std::int32_t i, const Vector& position) const;
+  // Where the box's image one period away across a face sits relative to the box, and how fast
+  // its particles move relative to their originals (the per-axis boundary rule): ±L_x along x,
+  // ±L_z along z, and along y the Lees–Edwards image, offset by ±Δ along x and moving at ±U.
+  struct FaceImage {
+    Vector position;
+    double velocity_x;
+  };
+  FaceImage image_across(int axis, int direction, double strain) const;
+  // Calls visit(j, shift, shift_vx) for every particle j ≠ i of the 3^D block of cells around
+  // i's cell, with the image shift (position, and velocity along x) that brings j next to i.
+  // The sheared frame is plainly periodic, so images follow from the cell offsets alone.
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, Visit&& visit) const;
-  // The image of a partner at lab offset (dx, dy) from a disk that is in contact with it.
+  // The image of a partner at lab offset `offset` from a particle in contact with it.
   struct PartnerImage {
     int image_y;  // −1, 0, +1: which vertical image
-    ImageShift shift;
+    FaceImage shift;
   };
-  PartnerImage nearest_image(double dx, double dy) const;
+  PartnerImage nearest_image(const Vector& offset) const;
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
 
@@ -168,8 +198,11 @@ class Simulation {
   bool protocol_running_ = false;
   double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
-  // Particle arrays (struct of arrays, plain ids).  Positions are valid at local time t_[i].
-  std::vector<double> x_, y_, vx_, vy_, t_;
+  // Particle arrays (struct of arrays, one array per component, plain ids).  Positions are valid
+  // at local time t_[i].
+  std::array<std::vector<double>, D> position_, velocity_;
+  std::vector<double> t_;
+  std::vector<double> diameter_, mass_;  // polydisperse runs only
   std::vector<std::uint32_t> count_;  // collisions of each particle: invalidates stale events
   std::vector<std::int32_t> cell_;
   std::vector<double> last_collision_;  // TC model only
@@ -185,7 +218,7 @@ class Simulation {
   TimedActions actions_;
   CollapseDetector collapse_detector_;
   CollapseReport collapse_;
-  std::vector<EventObserver*> observers_;
+  std::vector<EventObserver<D>*> observers_;
   const volatile std::sig_atomic_t* interrupt_ = nullptr;
 
   double t_now_ = 0.0;       // relative to clock_base_
@@ -197,35 +230,51 @@ class Simulation {
   std::int64_t events_since_rebase_ = 0;
 };
 
+template <int D>
 template <typename Visit>
-void Simulation::for_each_neighbour(std::int32_t i, Visit&& visit) const {
-  const int cell = cell_[static_cast<std::size_t>(i)];
-  const int column = grid_.column_of(cell);
-  const int row = grid_.row_of(cell);
+void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
+  const std::array<int, D> cell = cell_coordinates(cell_[static_cast<std::size_t>(i)]);
   const double s = strain();
-  for (int dr = -1; dr <= 1; ++dr) {
-    int r = row + dr;
-    int iy = 0;
-    if (r < 0) {
-      r += grid_.ny;
-      iy = -1;
-    } else if (r >= grid_.ny) {
-      r -= grid_.ny;
-      iy = 1;
-    }
-    const ImageShift row_shift = frame_.image_shift(0, iy, s);
-    for (int dc = -1; dc <= 1; ++dc) {
-      int c = column + dc;
-      double shift_x = row_shift.position.x;
-      if (c < 0) {
-        c += grid_.nx;
-        shift_x -= params_.length_x;
-      } else if (c >= grid_.nx) {
-        c -= grid_.nx;
-        shift_x += params_.length_x;
+  // Layers (z, 3D only) outermost, then rows (y), then columns (x): the order decides which of
+  // two partners at equal times is taken, so it is the 2D engine's order.
+  constexpr int kLayerReach = D == 3 ? 1 : 0;
+  for (int dl = -kLayerReach; dl <= kLayerReach; ++dl) {
+    int layer = 0;
+    double shift_z = 0.0;
+    if constexpr (D == 3) {
+      layer = cell[2] + dl;
+      if (layer < 0 || layer >= grid_.nz) {
+        const int direction = layer < 0 ? -1 : 1;
+        layer -= direction * grid_.nz;
+        shift_z = image_across(2, direction, s).position[2];
       }
-      for (std::int32_t j = lists_.first(grid_.index(c, r)); j != CellLists::kEnd; j = lists_.next(j)) {
-        if (j != i) visit(j, shift_x, row_shift);
+    }
+    for (int dr = -1; dr <= 1; ++dr) {
+      int r = cell[1] + dr;
+      int iy = 0;
+      if (r < 0) {
+        r += grid_.ny;
+        iy = -1;
+      } else if (r >= grid_.ny) {
+        r -= grid_.ny;
+        iy = 1;
+      }
+      const ImageShift row_shift = frame_.image_shift(0, iy, s);
+      for (int dc = -1; dc <= 1; ++dc) {
+        int c = cell[0] + dc;
+        Vector shift;
+        shift[0] = row_shift.position.x;
+        shift[1] = row_shift.position.y;
+        if constexpr (D == 3) shift[2] = shift_z;
+        if (c < 0 || c >= grid_.nx) {
+          const int direction = c < 0 ? -1 : 1;
+          c -= direction * grid_.nx;
+          shift[0] += image_across(0, direction, s).position[0];
+        }
+        const std::int32_t neighbour = grid_.index(c, r, layer);
+        for (std::int32_t j = lists_.first(neighbour); j != CellLists::kEnd; j = lists_.next(j)) {
+          if (j != i) visit(j, shift, row_shift.velocity_x);
+        }
       }
     }
   }

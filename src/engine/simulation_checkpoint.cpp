@@ -13,7 +13,8 @@ namespace {
 
 // The parameters a checkpoint must agree with (the restitution is restored: during the elastic
 // pre-run it is 1, not the configured value).
-void check_matches(const StateArchive& archive, const std::string& prefix, const SystemParams& p, const CellGrid& g) {
+void check_matches(const StateArchive& archive, const std::string& prefix, const SystemParams& p, const CellGrid& g,
+                   int dimension) {
   const auto expect = [&](const char* name, double value) {
     if (archive.scalar(prefix + name) != value) {
       throw std::runtime_error(std::string("checkpoint was written with another ") + name +
@@ -31,6 +32,11 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
   expect("grid_width", g.width);
   expect("grid_height", g.height);
   expect("grid_strain_period", g.strain_period);
+  if (dimension == 3) {
+    expect("length_z", p.length_z);
+    expect("grid_nz", g.nz);
+    expect("grid_depth", g.depth);
+  }
 }
 
 template <typename T>
@@ -42,12 +48,19 @@ std::vector<T> array_of_size(const StateArchive& archive, const std::string& nam
 
 }  // namespace
 
+template <int D>
 template <typename Self, typename Visit>
-void Simulation::visit_saved_state(Self& self, Visit&& visit) {
-  visit("x", self.x_);
-  visit("y", self.y_);
-  visit("vx", self.vx_);
-  visit("vy", self.vy_);
+void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
+  visit("x", self.position_[0]);
+  visit("y", self.position_[1]);
+  visit("vx", self.velocity_[0]);
+  visit("vy", self.velocity_[1]);
+  if constexpr (D == 3) {
+    visit("z", self.position_[2]);
+    visit("vz", self.velocity_[2]);
+  }
+  visit("particle_diameter", self.diameter_);
+  visit("particle_mass", self.mass_);
   visit("local_time", self.t_);
   visit("collision_count", self.count_);
   visit("cell", self.cell_);
@@ -66,7 +79,8 @@ void Simulation::visit_saved_state(Self& self, Visit&& visit) {
   visit("events_since_rebase", self.events_since_rebase_);
 }
 
-void Simulation::save(StateArchive& archive, const std::string& prefix) const {
+template <int D>
+void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "particles", static_cast<double>(params_.particles));
   archive.put_scalar(prefix + "diameter", params_.diameter);
   archive.put_scalar(prefix + "length_x", params_.length_x);
@@ -79,8 +93,18 @@ void Simulation::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "grid_width", grid_.width);
   archive.put_scalar(prefix + "grid_height", grid_.height);
   archive.put_scalar(prefix + "grid_strain_period", grid_.strain_period);
+  if constexpr (D == 3) {
+    archive.put_scalar(prefix + "length_z", params_.length_z);
+    archive.put_scalar(prefix + "grid_nz", grid_.nz);
+    archive.put_scalar(prefix + "grid_depth", grid_.depth);
+  }
 
   visit_saved_state(*this, [&](const char* name, const auto& value) {
+    // Per-particle diameters and masses exist only in polydisperse runs: a monodisperse
+    // checkpoint has no such entries (and keeps the content it had before they existed).
+    if constexpr (!std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
+      if (value.empty() && (std::string_view(name) == "particle_diameter" || std::string_view(name) == "particle_mass")) return;
+    }
     if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) {
       archive.put_scalar(prefix + name, value);
     } else if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::int64_t>) {
@@ -99,13 +123,15 @@ void Simulation::save(StateArchive& archive, const std::string& prefix) const {
   collapse_detector_.save(archive, prefix + "collapse_");
 }
 
-Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
-                       const std::string& prefix)
+template <int D>
+Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
+                          const std::string& prefix)
     : params_(params),
       grid_(grid),
       frame_{params.length_x, params.length_y, 0.0},
       protocol_(params.shear_velocity, params.shear_history) {
-  check_matches(archive, prefix, params, grid);
+  check_matches(archive, prefix, params, grid, D);
+  const bool polydisperse = archive.contains(prefix + "particle_diameter");
   params_.restitution = archive.scalar(prefix + "restitution");
   const auto n = static_cast<std::size_t>(params.particles);
   visit_saved_state(*this, [&](const char* name, auto& value) {
@@ -115,10 +141,14 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
     } else if constexpr (std::is_same_v<Value, std::int64_t>) {
       value = archive.integer(prefix + name);
     } else {
-      // Per-disk arrays; the TC history exists only with the TC model, the kept collision times
-      // only under a time-dependent shear protocol.
-      const bool absent = (std::string_view(name) == "last_collision" && params.tc_duration <= 0.0) ||
-                          (std::string_view(name) == "collision_time" && protocol_.constant());
+      // Per-particle arrays; the TC history exists only with the TC model, the kept collision
+      // times only under a time-dependent shear protocol (both saved empty otherwise), sizes and
+      // masses only in polydisperse runs (not saved otherwise).
+      const std::string_view key(name);
+      const bool per_particle_sizes = key == "particle_diameter" || key == "particle_mass";
+      if (per_particle_sizes && !polydisperse) return;
+      const bool absent = (key == "last_collision" && params.tc_duration <= 0.0) ||
+                          (key == "collision_time" && protocol_.constant());
       value = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
     }
   });
@@ -129,7 +159,7 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
   kind_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (kinds[i] > static_cast<std::uint8_t>(EventKind::kCrossUp)) throw std::runtime_error("checkpoint has an unknown event kind");
+    if (kinds[i] > last_event_kind(D)) throw std::runtime_error("checkpoint has an unknown event kind");
     kind_[i] = static_cast<EventKind>(kinds[i]);
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -149,5 +179,8 @@ Simulation::Simulation(const SystemParams& params, const CellGrid& grid, const S
     throw std::runtime_error(std::string("checkpoint fails the engine's invariants: ") + error.what());
   }
 }
+
+template class Simulation<2>;
+template class Simulation<3>;
 
 }  // namespace granule

@@ -1,6 +1,7 @@
 // The engine's invariants, checked on demand (tests, restored checkpoints) and, in the
 // GRANULE_PARANOID build, at every re-base and before every event (DynamO re-checks the event it
 // is about to execute for the same reason: round-off can reorder near-simultaneous events).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -28,89 +29,84 @@ template <typename... Parts>
 }
 }  // namespace
 
-void Simulation::check_invariants() const {
+template <int D>
+void Simulation<D>::check_invariants() const {
   const auto n = static_cast<std::int32_t>(params_.particles);
   if (!heap_.is_consistent()) fail("the event heap is out of order");
-  // Every disk in exactly one list, the list of its own cell.
+  // Every particle in exactly one list, the list of its own cell.
   std::vector<std::uint8_t> seen(at(n), 0);
-  for (int c = 0; c < grid_.cell_count(); ++c) {
+  for (std::int64_t c = 0; c < grid_.cell_count(); ++c) {
     std::int64_t steps = 0;
-    for (std::int32_t j = lists_.first(c); j != CellLists::kEnd; j = lists_.next(j)) {
-      if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || cell_[at(j)] != c) {
-        fail("cell list ", c, " is corrupt at disk ", j);
+    const auto cell = static_cast<std::int32_t>(c);
+    for (std::int32_t j = lists_.first(cell); j != CellLists::kEnd; j = lists_.next(j)) {
+      if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || cell_[at(j)] != cell) {
+        fail("cell list ", c, " is corrupt at particle ", j);
       }
     }
   }
   const double s = strain();
-  const double cell_tolerance = kDistanceTolerance * std::max(grid_.width, grid_.height);
+  const double cell_tolerance = kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth});
   for (std::int32_t i = 0; i < n; ++i) {
-    if (!seen[at(i)]) fail("disk ", i, " is in no cell list");
-    const double dt = t_now_ - t_[at(i)];
-    const double x = x_[at(i)] + vx_[at(i)] * dt;
-    const double y = y_[at(i)] + vy_[at(i)] * dt;
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(vx_[at(i)]) || !std::isfinite(vy_[at(i)]) || dt < 0.0) {
-      fail("disk ", i, " has a non-finite state or a local time after the clock");
-    }
-    const double xi = frame_.sheared_x(x, y, s);
-    const int column = grid_.column_of(cell_[at(i)]);
-    const int row = grid_.row_of(cell_[at(i)]);
-    if (xi < column * grid_.width - cell_tolerance || xi > (column + 1) * grid_.width + cell_tolerance ||
-        y < row * grid_.height - cell_tolerance || y > (row + 1) * grid_.height + cell_tolerance) {
-      fail("disk ", i, " at (ξ, y) = (", xi, ", ", y, ") is outside its cell (", column, ", ", row, ")");
-    }
-    for_each_neighbour(i, [&](std::int32_t j, double shift_x, const ImageShift& row_shift) {
-      const double dt_j = t_now_ - t_[at(j)];
-      const double rx = x_[at(j)] + vx_[at(j)] * dt_j + shift_x - x;
-      const double ry = y_[at(j)] + vy_[at(j)] * dt_j + row_shift.position.y - y;
-      if (std::sqrt(rx * rx + ry * ry) < params_.diameter * (1.0 - kDistanceTolerance)) {
-        fail("disks ", i, " and ", j, " overlap: distance ", std::sqrt(rx * rx + ry * ry) / params_.diameter, " σ");
+    if (!seen[at(i)]) fail("particle ", i, " is in no cell list");
+    const Vector r = position_now(i);
+    bool finite = t_now_ >= t_[at(i)];
+    for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(velocity_[a][at(i)]);
+    if (!finite) fail("particle ", i, " has a non-finite state or a local time after the clock");
+    // Its cell, from the sheared abscissa ξ and the plain other coordinates.
+    const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+    for (int a = 0; a < D; ++a) {
+      const double coordinate = a == 0 ? frame_.sheared_x(r[0], r[1], s) : r[a];
+      if (coordinate < cell[a] * grid_.size(a) - cell_tolerance || coordinate > (cell[a] + 1) * grid_.size(a) + cell_tolerance) {
+        fail("particle ", i, " is outside its cell along axis ", a, " (coordinate ", coordinate, ", cell ", cell[a], ")");
       }
+    }
+    for_each_neighbour(i, [&](std::int32_t j, const Vector& shift, double) {
+      const double distance = norm(position_now(j) + shift - r);
+      const double sigma = contact_distance(i, j);
+      if (distance < sigma * (1.0 - kDistanceTolerance)) fail("particles ", i, " and ", j, " overlap: distance ", distance / sigma, " σ_ij");
     });
-    // One event per particle (Smallenburg 2022): a disk's slot is never later than its true next
-    // event, unless the partner of that event holds it in its own slot.
+    // One event per particle (Smallenburg 2022): a particle's slot is never later than its true
+    // next event, unless the partner of that event holds it in its own slot.
     const double stored = heap_.time_of(i);
-    if (stored < t_now_) fail("disk ", i, " has an event in the past");
+    if (stored < t_now_) fail("particle ", i, " has an event in the past");
     const Prediction fresh = next_event(i);
     const EventKind kind = fresh.kind();
     if (kind == EventKind::kNone) continue;
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance);
     const bool held = stored <= due || (kind == EventKind::kCollision && heap_.time_of(fresh.partner) <= due);
     if (!held) {
-      fail("disk ", i, " has its next event (", static_cast<int>(kind), " with ", fresh.partner, ") at t = ", t_now_ + fresh.delay(), " but its slot says ", stored);
+      fail("particle ", i, " has its next event (", static_cast<int>(kind), " with ", fresh.partner, ") at t = ", t_now_ + fresh.delay(), " but its slot says ", stored);
     }
   }
 }
 
-void Simulation::check_popped_event(std::int32_t i) const {
+template <int D>
+void Simulation<D>::check_popped_event(std::int32_t i) const {
   const EventKind kind = kind_[at(i)];
-  const double dt = t_now_ - t_[at(i)];
-  const double x = x_[at(i)] + vx_[at(i)] * dt;
-  const double y = y_[at(i)] + vy_[at(i)] * dt;
+  const Vector r = position_now(i);
   if (kind == EventKind::kCollision) {
     const std::int32_t j = partner_[at(i)];
     if (count_[at(j)] != partner_count_[at(i)]) return;  // stale: nothing to execute
-    const double dt_j = t_now_ - t_[at(j)];
-    const double dx = x_[at(j)] + vx_[at(j)] * dt_j - x;
-    const double dy = y_[at(j)] + vy_[at(j)] * dt_j - y;
-    const auto [iy, shift] = nearest_image(dx, dy);
-    const double rx = dx + shift.position.x, ry = dy + shift.position.y;
-    if (std::sqrt(rx * rx + ry * ry) > params_.diameter * (1.0 + kDistanceTolerance)) {
-      fail("collision of disks ", i, " and ", j, " popped at distance ", std::sqrt(rx * rx + ry * ry) / params_.diameter, " σ");
+    const Vector offset = position_now(j) - r;
+    const double distance = norm(offset + nearest_image(offset).shift.position);
+    const double sigma = contact_distance(i, j);
+    if (distance > sigma * (1.0 + kDistanceTolerance)) {
+      fail("collision of particles ", i, " and ", j, " popped at distance ", distance / sigma, " σ_ij");
     }
     return;
   }
   if (kind == EventKind::kNone) return;
-  // A crossing: the disk must be on the face it is about to cross.
-  const double xi = frame_.sheared_x(x, y, strain());
-  const int column = grid_.column_of(cell_[at(i)]);
-  const int row = grid_.row_of(cell_[at(i)]);
-  const double face = kind == EventKind::kCrossRight ? (column + 1) * grid_.width - xi
-                      : kind == EventKind::kCrossLeft ? xi - column * grid_.width
-                      : kind == EventKind::kCrossUp   ? (row + 1) * grid_.height - y
-                                                      : y - row * grid_.height;
-  if (std::abs(face) > kDistanceTolerance * std::max(grid_.width, grid_.height)) {
-    fail("crossing of disk ", i, " popped ", face, " away from its face");
+  // A crossing: the particle must be on the face it is about to cross.
+  const int axis = crossing_axis(kind);
+  const double coordinate = axis == 0 ? frame_.sheared_x(r[0], r[1], strain()) : r[axis];
+  const int cell = cell_coordinates(cell_[at(i)])[static_cast<std::size_t>(axis)];
+  const double face = (cell + (crossing_direction(kind) > 0 ? 1 : 0)) * grid_.size(axis);
+  if (std::abs(face - coordinate) > kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth})) {
+    fail("crossing of particle ", i, " popped ", face - coordinate, " away from its face");
   }
 }
+
+template class Simulation<2>;
+template class Simulation<3>;
 
 }  // namespace granule

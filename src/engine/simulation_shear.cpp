@@ -14,13 +14,15 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
-double Simulation::shear_offset() const {
+template <int D>
+double Simulation<D>::shear_offset() const {
   const double lx = params_.length_x;
   const double offset = std::fmod(strain() * params_.length_y, lx);
   return offset < 0.0 ? offset + lx : offset;
 }
 
-void Simulation::schedule_realignment() {
+template <int D>
+void Simulation<D>::schedule_realignment() {
   // Computed afresh from t_ref whenever it moves (never shifted), so that a restored checkpoint
   // schedules it bit for bit as the uninterrupted run did.
   const double half = 0.5 * grid_.strain_period;
@@ -28,13 +30,15 @@ void Simulation::schedule_realignment() {
                     shear_rate_ != 0.0 ? t_ref_ + (std::copysign(half, shear_rate_) - strain_ref_) / shear_rate_ : kInf);
 }
 
-void Simulation::enter_shear_segment(const ShearSegment& segment) {
+template <int D>
+void Simulation<D>::enter_shear_segment(const ShearSegment& segment) {
   segment_end_ = segment.end;
   actions_.schedule(TimedAction::kShearSegment, segment.end - clock_base_);
   if (segment.velocity != frame_.shear_velocity) change_image_velocity(segment.velocity);
 }
 
-void Simulation::change_image_velocity(double velocity) {
+template <int D>
+void Simulation<D>::change_image_velocity(double velocity) {
   strain_ref_ = strain();
   t_ref_ = t_now_;
   frame_.shear_velocity = velocity;
@@ -43,7 +47,8 @@ void Simulation::change_image_velocity(double velocity) {
   repredict_after_shear_change();
 }
 
-void Simulation::repredict_after_shear_change() {
+template <int D>
+void Simulation<D>::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   if (collision_time_.empty()) {  // a constant protocol changes U once at most (a static start)
     for (std::int32_t i = 0; i < n; ++i) predict(i);
@@ -52,12 +57,11 @@ void Simulation::repredict_after_shear_change() {
   for (std::int32_t i = 0; i < n; ++i) {
     const int row = grid_.row_of(cell_[at(i)]);
     if (row == 0 || row == grid_.ny - 1) {
-      predict(i);  // its 3×3 block reaches across the boundary, where the images' velocity changed
+      predict(i);  // its 3^D block reaches across the boundary, where the images' velocity changed
       continue;
     }
     // The earliest collision inside the box is unchanged; the crossing in ξ is not.
-    const double dt = t_now_ - t_[at(i)];
-    const Crossing crossing = next_crossing(i, x_[at(i)] + vx_[at(i)] * dt, y_[at(i)] + vy_[at(i)] * dt);
+    const Crossing crossing = next_crossing(i, position_now(i));
     const double t_crossing = t_now_ + crossing.delay;
     const bool collision_first = collision_time_[at(i)] < t_crossing;
     kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;
@@ -65,35 +69,62 @@ void Simulation::repredict_after_shear_change() {
   }
 }
 
-void Simulation::realign_sheared_grid() {
+template <int D>
+void Simulation<D>::realign_sheared_grid() {
   // |strain| reached half a period: move t_ref by one period, which shifts the image offset by
   // a whole number of box widths (cell_grid.hpp), then re-bin everything on the new grid.
   t_ref_ += grid_.strain_period / std::abs(shear_rate_);
   rebuild();
 }
 
-Simulation::PartnerImage Simulation::nearest_image(double dx, double dy) const {
+template <int D>
+typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, int direction, double strain) const {
+  FaceImage image{};
+  if (axis == 1) {
+    const ImageShift shift = frame_.image_shift(0, direction, strain);
+    image.position[0] = shift.position.x;
+    image.position[1] = shift.position.y;
+    image.velocity_x = shift.velocity_x;
+  } else {
+    image.position[axis] = direction * (axis == 0 ? params_.length_x : params_.length_z);
+  }
+  return image;
+}
+
+template <int D>
+typename Simulation<D>::PartnerImage Simulation<D>::nearest_image(const Vector& offset) const {
   // The nearest image in the sheared frame, unambiguous because cells are at least as large as
   // a contact pair (cell_grid.hpp).
   const double lx = params_.length_x;
   const double ly = params_.length_y;
   const double s = strain();
+  const double dx = offset[0];
+  const double dy = offset[1];
   const int iy = dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0);
-  ImageShift shift = frame_.image_shift(0, iy, s);
-  const double dxi = (dx + shift.position.x) - s * (dy + shift.position.y);
-  shift.position.x -= lx * std::round(dxi / lx);
+  const ImageShift row = frame_.image_shift(0, iy, s);
+  FaceImage shift{};
+  shift.position[0] = row.position.x;
+  shift.position[1] = row.position.y;
+  shift.velocity_x = row.velocity_x;
+  const double dxi = (dx + shift.position[0]) - s * (dy + shift.position[1]);
+  shift.position[0] -= lx * std::round(dxi / lx);
+  if constexpr (D == 3) shift.position[2] = -params_.length_z * std::round(offset[2] / params_.length_z);
   return {iy, shift};
 }
 
-void Simulation::enter_from_image(std::int32_t i, int image_y) {
+template <int D>
+void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
   const ImageShift shift = frame_.image_shift(0, image_y, strain());
-  const double vx_before = vx_[at(i)];
-  x_[at(i)] += shift.position.x;
-  y_[at(i)] += shift.position.y;
-  vx_[at(i)] += shift.velocity_x;
+  const double vx_before = velocity_[0][at(i)];
+  position_[0][at(i)] += shift.position.x;
+  position_[1][at(i)] += shift.position.y;
+  velocity_[0][at(i)] += shift.velocity_x;
   if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, vx_[at(i)]};
-  for (EventObserver* observer : observers_) observer->on_boundary_crossing(record);
+  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, velocity_[0][at(i)]};
+  for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
+
+template class Simulation<2>;
+template class Simulation<3>;
 
 }  // namespace granule

@@ -1,8 +1,11 @@
-// Non-overlapping initial positions of N disks of diameter σ in a periodic L_x × L_y box
-// (thesis §1.4.2: uniformly distributed): random sequential addition, or a triangular lattice
-// with random vacancies for dense systems.  Scratch memory is O(N) at any area fraction.
+// Non-overlapping initial positions of N disks (d = 2) or spheres (d = 3) in a periodic box
+// (thesis §1.4.2: uniformly distributed): random sequential addition, or a lattice with random
+// vacancies for dense systems (triangular in 2D, face-centred cubic in 3D).  Per-particle
+// diameters (polydisperse systems) come in out.diameter; otherwise every σ = params.diameter,
+// which is always the largest diameter.  Scratch memory is O(N) at any packing fraction.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -11,32 +14,46 @@
 
 namespace granule {
 
-// The overlap-test grid of random sequential addition: cells of side ≥ σ (so a new disk can only
-// overlap disks of its own and the 8 neighbouring cells) and ≥ √(L_x L_y / N) (so there are at
-// most N cells, about one disk each when full): memory is O(N) whatever the area fraction.
-// Each cell is a singly linked list of the disks placed in it (head per cell, next per disk).
+// The overlap-test grid of random sequential addition: cells of side ≥ σ_max (so a new particle
+// can only overlap particles of its own and the 3^d − 1 neighbouring cells) and ≥ (V/N)^(1/d) (so
+// there are at most N cells, about one particle each when full): one int32 per cell and one per
+// particle, whatever the packing fraction.  Each cell is a singly linked list of the particles
+// placed in it.
 struct PlacementGrid {
-  int nx = 1;
-  int ny = 1;
-  double cell_width = 1.0;
-  double cell_height = 1.0;
-  std::vector<std::int32_t> head;  // first disk of each cell, −1 if empty
-  std::vector<std::int32_t> next;  // next disk of the same cell, −1 at the end
+  int dimension = 2;
+  std::array<int, 3> count{1, 1, 1};        // cells along x, y, z (1 along z in 2D)
+  std::array<double, 3> width{1.0, 1.0, 1.0};
+  std::vector<std::int32_t> head;  // first particle of each cell, −1 if empty
+  std::vector<std::int32_t> next;  // next particle of the same cell, −1 at the end
 
-  PlacementGrid(const SystemParams& params);
-  std::size_t cell_of(int column, int row) const {
-    return static_cast<std::size_t>(column) + static_cast<std::size_t>(row) * static_cast<std::size_t>(nx);
+  explicit PlacementGrid(const SystemParams& params);
+  std::size_t cell_of(const std::array<int, 3>& cell) const {
+    return static_cast<std::size_t>(cell[0]) +
+           static_cast<std::size_t>(count[0]) *
+               (static_cast<std::size_t>(cell[1]) + static_cast<std::size_t>(count[1]) * static_cast<std::size_t>(cell[2]));
   }
 };
 
-// Random sequential addition: uniform trial positions, each rejected if it overlaps a disk
-// already placed, until N are placed.  False if 1000 N + 10⁵ trials were not enough (jamming,
-// ν ≳ 0.5).  Writes out.x, out.y (out must hold N entries).
+// Random sequential addition in the order of the particles (largest first when the diameters are
+// sorted): uniform trial positions, each rejected if it overlaps a particle already placed, until
+// N are placed.  False if 1000 N + 10⁵ trials were not enough (jamming: ν ≳ 0.5 in 2D, φ ≳ 0.35 in
+// 3D).  Writes the positions of out (which must hold N entries).
 bool place_randomly(const SystemParams& params, Random& rng, ParticleState& out);
 
-// Triangular lattice with an even number of rows (so it is periodic), the row count chosen to
-// maximise the nearest-neighbour distance; N of its sites are occupied at random.  False if no
-// such lattice keeps the disks apart.
+// The lattice of at least N sites whose nearest-neighbour distance (`spacing`) is the largest
+// this box allows: in 2D a triangular lattice of `cells[0]` columns and an even number `cells[1]`
+// of rows (so it is periodic); in 3D an FCC lattice of cells[0] × cells[1] × cells[2] cubic cells
+// of 4 sites (stretched to the box: any counts are periodic).  It depends on N and the box only.
+struct Lattice {
+  int dimension = 2;
+  std::array<std::int64_t, 3> cells{1, 1, 1};
+  double spacing = 0.0;
+  std::int64_t sites() const { return cells[0] * cells[1] * cells[2] * (dimension == 3 ? 4 : 1); }
+};
+Lattice densest_lattice(const SystemParams& params);
+
+// N of the sites of densest_lattice, chosen at random.  False if its spacing is below the
+// (largest) diameter.
 bool place_on_lattice(const SystemParams& params, Random& rng, ParticleState& out);
 
 }  // namespace granule

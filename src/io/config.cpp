@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "cells/cell_grid.hpp"
+#include "io/config_geometry.hpp"
 #include "io/config_reader.hpp"
 #include "io/config_shear.hpp"
 #include "io/input_ranges.hpp"
@@ -21,7 +22,9 @@ namespace {
 const ConfigSchema& schema() {
   static const ConfigSchema keys = {
       {"", {"seed"}},
-      {"system", {"particles", "area_fraction", "diameter", "box", "restitution", "tc_duration"}},
+      {"system",
+       {"dimension", "particles", "area_fraction", "packing_fraction", "diameter", "diameters", "masses", "box",
+        "restitution", "tc_duration"}},
       {"boundary", {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance"}},
       {"initial",
        {"temperature", "temperature_over_steady", "shear_profile", "from", "frame", "equilibrate", "placement"}},
@@ -41,7 +44,6 @@ const ConfigSchema& schema() {
 
 constexpr NumberRange kPositive{0.0, kUnbounded, true, true};
 constexpr NumberRange kNonNegative{0.0, kUnbounded, false, true};
-constexpr double kDefaultAreaFraction = 0.05;
 
 // A setting in collisions per particle c.  c·N is rounded to a whole number of collisions, so it
 // must name at least one (c ≥ 1/N) and at most 2⁶² (kMaxCollisions), so that the count and a count
@@ -56,53 +58,6 @@ std::optional<double> collision_count_setting(const ConfigReader& in, const std:
                                   zero_allowed ? "0 (" + zero_meaning + ") or " : "", counts.text(), particles));
 }
 
-// Box, diameter and area fraction ν = πNσ²/(4 L_x L_y) (thesis §3.1.1).  Besides ν below close
-// packing, the box may be at most kMaxBoxOverDiameter diameters long in either direction.
-void resolve_geometry(const ConfigReader& in, RunConfig& c) {
-  SystemParams& s = c.system;
-  const auto box = in.number_pair("system.box", kLengthRange).value_or(std::pair{1.0, 1.0});
-  s.length_x = box.first;
-  s.length_y = box.second;
-  const double area = s.length_x * s.length_y;
-  const auto n = static_cast<double>(s.particles);
-  const auto area_fraction_of = [&](double sigma) { return M_PI * n * sigma * sigma / (4.0 * area); };
-  const double sigma_min = std::max(s.length_x, s.length_y) / kMaxBoxOverDiameter;
-  const double sigma_max = std::sqrt(4.0 * area * kClosePacking / (M_PI * n));
-  const std::string context =
-      fmt::format(" for N = {} and system.box = [{}, {}] (at most {:g} diameters across the box, so that positions "
-                  "resolve contacts; below hexagonal close packing π/(2√3))", s.particles, s.length_x, s.length_y,
-                  kMaxBoxOverDiameter);
-  if (!(sigma_min < sigma_max)) {
-    throw ConfigError{fmt::format("system.box = [{}, {}] is too elongated for N = {}: no diameter keeps both sides "
-                                  "within {:g} diameters below close packing; allowed aspect ratios up to {:g}",
-                                  s.length_x, s.length_y, s.particles, kMaxBoxOverDiameter,
-                                  4.0 * kClosePacking * kMaxBoxOverDiameter * kMaxBoxOverDiameter / (M_PI * n))};
-  }
-  const NumberRange diameters{sigma_min, sigma_max, false, true};
-  const NumberRange area_fractions{area_fraction_of(sigma_min), kClosePacking, false, true};
-  const auto nu = in.number("system.area_fraction", area_fractions, context);
-  const auto diameter = in.number("system.diameter", diameters, context);
-  if (nu && diameter) {
-    throw ConfigError{"system.area_fraction and system.diameter are both set: give one of them "
-                      "(the other follows from ν = πNσ²/(4 Lx Ly))"};
-  }
-  const double given = diameter ? *diameter : nu.value_or(kDefaultAreaFraction);
-  if (!diameter && !area_fractions.contains(given)) {  // only the default can be out of range here
-    throw ConfigError{fmt::format("system.area_fraction = {} (the default) is out of range: allowed {}{}", given,
-                                  area_fractions.text(), context)};
-  }
-  s.diameter = diameter ? given : std::sqrt(4.0 * given * area / (M_PI * n));
-  // ν is always the one of σ, so that a configuration re-read from to_toml() (which stores σ) is
-  // identical in every field.
-  c.area_fraction = area_fraction_of(s.diameter);
-  if (!(c.area_fraction < kClosePacking)) {  // a value just below a rounded bound can still reach it
-    const std::string key = diameter ? "system.diameter" : "system.area_fraction";
-    throw ConfigError{fmt::format("{} = {} gives area fraction {}, at or above close packing {}: allowed {}{}", key,
-                                  given, c.area_fraction, kClosePacking,
-                                  (diameter ? diameters : area_fractions).text(), context)};
-  }
-}
-
 // Exactly one of `count` and `time` may be given.
 void require_one_of(const ConfigReader& in, const std::string& count, const std::string& time) {
   if (in.has(count) && in.has(time)) throw ConfigError{fmt::format("{} and {} are both set: give one", count, time)};
@@ -111,6 +66,7 @@ void require_one_of(const ConfigReader& in, const std::string& count, const std:
 // The engine's cell grid must exist (choose_cell_grid explains why not) and have 32-bit cell ids.
 void check_engine_grid(const RunConfig& c) {
   const SystemParams& s = c.system;
+  if (s.dimension == 3) return;  // the grid of choose_cell_grid is the 2D one
   const CellGridChoice choice = choose_cell_grid(
       {s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells});
   if (!choice.grid) throw ConfigError{choice.error};
@@ -131,6 +87,8 @@ RunConfig resolve(const toml::table& root) {
   SystemParams& s = c.system;
   s.particles = in.integer("system.particles", 2, INT32_MAX).value_or(4000);
   const std::int64_t n = s.particles;
+  const std::string placement = in.text("initial.placement", {"auto", "random", "lattice"}).value_or("auto");
+  c.placement = placement == "random" ? Placement::kRandom : placement == "lattice" ? Placement::kLattice : Placement::kAuto;
   resolve_geometry(in, c);
   s.restitution = in.number("system.restitution", NumberRange{0.0, 1.0, true, false}).value_or(0.6);
   s.tc_duration = in.number("system.tc_duration", kNonNegative, " (0 switches the TC model off)").value_or(0.0);
@@ -144,8 +102,6 @@ RunConfig resolve(const toml::table& root) {
     throw ConfigError{"initial.frame needs initial.from = \"DIR\" (the run whose snapshot frame to start from)"};
   }
   c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
-  const std::string placement = in.text("initial.placement", {"auto", "random", "lattice"}).value_or("auto");
-  c.placement = placement == "random" ? Placement::kRandom : placement == "lattice" ? Placement::kLattice : Placement::kAuto;
 
   c.until_collisions_per_particle = collision_count_setting(in, "run.until_collisions_per_particle", n);
   c.until_time = in.number("run.until_time", kPositive);
@@ -219,8 +175,9 @@ RunConfig resolve(const toml::table& root) {
 // settings of a new gas (its pre-run too: a state taken from a run is not re-melted unless asked).
 const std::map<std::string, std::vector<std::string>>& replaced_keys() {
   static const std::map<std::string, std::vector<std::string>> replaces = {
-      {"system.area_fraction", {"system.diameter"}},
-      {"system.diameter", {"system.area_fraction"}},
+      {"system.area_fraction", {"system.diameter", "system.packing_fraction"}},
+      {"system.packing_fraction", {"system.diameter", "system.area_fraction"}},
+      {"system.diameter", {"system.area_fraction", "system.packing_fraction"}},
       {"initial.temperature", {"initial.temperature_over_steady", "initial.from", "initial.frame"}},
       {"initial.temperature_over_steady", {"initial.temperature", "initial.from", "initial.frame"}},
       {"initial.from", {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile",
@@ -280,10 +237,8 @@ std::string to_toml(const RunConfig& c) {
   const SystemParams& s = c.system;
   std::string out = "# Fully resolved configuration written by granule run: repeat the run with\n"
                     "#   granule run config.toml\n";
-  out += fmt::format("seed = {}\n\n[system]\nparticles = {}\ndiameter = {:.17g}  # area_fraction = {:.17g}\n"
-                     "box = [{:.17g}, {:.17g}]\nrestitution = {:.17g}\ntc_duration = {:.17g}\n\n",
-                     c.seed, s.particles, s.diameter, c.area_fraction, s.length_x, s.length_y,
-                     s.restitution, s.tc_duration);
+  out += fmt::format("seed = {}\n\n[system]\n", c.seed) + geometry_to_toml(c);
+  out += fmt::format("restitution = {:.17g}\ntc_duration = {:.17g}\n\n", s.restitution, s.tc_duration);
   out += speeds_to_toml(c);
   const char* placement = c.placement == Placement::kRandom ? "random" : c.placement == Placement::kLattice ? "lattice" : "auto";
   out += fmt::format("equilibrate = {:.17g}\n", c.equilibrate);

@@ -47,8 +47,12 @@ struct InitialSource {
 
 struct RunConfig {
   std::uint64_t seed = 1;
-  SystemParams system;           // diameter always resolved
-  double area_fraction = 0.0;    // ν = πNσ²/(4 L_x L_y), always resolved
+  SystemParams system;           // diameter always resolved: the largest diameter
+  // ν = π Σσ_i^d / (k_d V), always resolved: the area fraction πNσ²/(4 L_x L_y) of disks (k_2 = 4),
+  // the volume fraction of spheres (k_3 = 6).
+  double packing_fraction = 0.0;
+  double reference_diameter = 0.0;  // σ̄ (system.diameter): σ_i = σ̄ r_i; equal to system.diameter when monodisperse
+  SizeDistribution diameters;       // system.diameters and system.masses
   bool lees_edwards = false;
   double initial_temperature = 1.0;  // resolved (also from initial.temperature_over_steady)
   std::optional<double> initial_temperature_over_steady;  // T_i / T₀ of (4.5), when given so
@@ -78,6 +82,10 @@ struct ConfigResult {
 // `text` is TOML (may be empty: the built-in defaults); `overrides` are "section.key=value".
 ConfigResult parse_config(const std::string& text, const std::vector<std::string>& overrides);
 ConfigResult load_config_file(const std::string& path, const std::vector<std::string>& overrides);
+
+// The per-particle diameters and masses of the run (drawn from its seed; empty when monodisperse),
+// for make_initial_state.
+ParticleSizes particle_sizes(const RunConfig& config);
 
 // The fully resolved configuration as TOML, so that any run can be repeated exactly.
 std::string to_toml(const RunConfig& config);

@@ -162,17 +162,28 @@ std::optional<std::string> ConfigReader::path_text(const std::string& path) cons
   return value;
 }
 
-std::optional<std::pair<double, double>> ConfigReader::number_pair(const std::string& path, const NumberRange& range) const {
+std::optional<std::vector<double>> ConfigReader::number_list(const std::string& path, std::size_t count,
+                                                           const NumberRange& range, const std::string& shape,
+                                                           const std::string& why) const {
   const toml::node* node = find(path);
   if (!node) return std::nullopt;
-  const toml::array* array = node->as_array();
-  if (array && array->size() == 2) {
-    const auto a = (*array)[0].value<double>();
-    const auto b = (*array)[1].value<double>();
-    if (a && b && range.contains(*a) && range.contains(*b)) return std::pair{*a, *b};
+  std::vector<double> out;
+  if (const toml::array* array = node->as_array(); array && array->size() == count) {
+    for (const toml::node& item : *array) {
+      const auto value = item.value<double>();
+      if (!value || !range.contains(*value)) break;
+      out.push_back(*value + 0.0);
+    }
   }
-  throw ConfigError{fmt::format("{} = {} is not allowed: expected [Lx, Ly] with two numbers in {}", path,
-                                show_node(*node), range.text())};
+  if (out.size() == count) return out;
+  const char* const counts[] = {"no", "one number", "two numbers", "three numbers"};
+  throw ConfigError{fmt::format("{} = {} is not allowed: expected {} ({} in {}){}", path, show_node(*node), shape,
+                                count < 4 ? counts[count] : "numbers", range.text(), why)};
+}
+
+bool ConfigReader::holds_text(const std::string& path) const {
+  const toml::node* node = find(path);
+  return node && node->is_string();
 }
 
 std::optional<bool> ConfigReader::boolean(const std::string& path) const {

@@ -43,8 +43,12 @@ class ConfigReader {
   std::optional<std::string> text(const std::string& path, const std::set<std::string>& allowed) const;
   // A non-empty string (a file or directory path).
   std::optional<std::string> path_text(const std::string& path) const;
-  // [a, b], both in `range`.
-  std::optional<std::pair<double, double>> number_pair(const std::string& path, const NumberRange& range) const;
+  // A list of exactly `count` numbers, each in `range`; `shape` names them in the message
+  // ("[Lx, Ly, Lz]") and `why` is appended to it.
+  std::optional<std::vector<double>> number_list(const std::string& path, std::size_t count, const NumberRange& range,
+                                                 const std::string& shape, const std::string& why = {}) const;
+  // Whether the value at `path` is a string (for keys that take a word or a list).
+  bool holds_text(const std::string& path) const;
   std::optional<bool> boolean(const std::string& path) const;
   // A list of windows [[low, high], ...] with 0 ≤ low < high, both finite.
   std::vector<std::pair<double, double>> windows(const std::string& path) const;

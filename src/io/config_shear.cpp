@@ -88,12 +88,16 @@ void resolve_speeds(const ConfigReader& in, RunConfig& c) {
   if (const auto ratio = c.initial_temperature_over_steady) {
     in.number_if("boundary.shear_velocity", speed_allowed, "0 or |U| in " + kSpeedRange.text());
     if (temperature) throw ConfigError{"initial.temperature and initial.temperature_over_steady are both set: give one"};
+    if (s.dimension == 3 || !c.diameters.monodisperse()) {  // eq (4.5) is the kinetic theory of equal disks
+      throw ConfigError{fmt::format("initial.temperature_over_steady = {} needs the T₀ of thesis eq (4.5), which is "
+                                    "for equal disks: give initial.temperature in 3D and polydisperse runs", *ratio)};
+    }
     if (s.shear_velocity == 0.0 || s.restitution >= 1.0) {
       throw ConfigError{fmt::format("initial.temperature_over_steady = {} needs a steady T₀ (4.5): a Lees–Edwards "
                                     "shear U₀ ≠ 0 and system.restitution < 1", *ratio)};
     }
     const double t0 = theory::steady_shear_temperature_kinetic(s.restitution, std::abs(s.shear_velocity) / s.length_y,
-                                                               s.diameter, c.area_fraction);
+                                                               s.diameter, c.packing_fraction);
     c.initial_temperature = *ratio * t0;
     if (!kTemperatureRange.contains(c.initial_temperature)) {
       throw ConfigError{fmt::format("initial.temperature_over_steady = {} gives T_i = {} (T₀ = {}): allowed T_i in {}",

@@ -25,7 +25,7 @@ GlobalDiagnostics::GlobalDiagnostics(const SystemParams& params, int cells_x, in
       frame_{params.length_x, params.length_y, params.shear_velocity},
       grid_{cells_x, cells_y, params.length_x, params.length_y} {}
 
-void GlobalDiagnostics::on_collision(const CollisionRecord& record) {
+void GlobalDiagnostics::on_collision(const CollisionRecord<2>& record) {
   impulse_sum_ += record.impulse;
   impulse_xy_sum_ += record.impulse * record.contact_normal.x * record.contact_normal.y;
 }

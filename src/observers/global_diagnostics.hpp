@@ -59,12 +59,12 @@ void for_each_column(Sample& s, Visit&& visit) {
   for_each_flow_measure(s.flow, visit);
 }
 
-class GlobalDiagnostics final : public EventObserver {
+class GlobalDiagnostics final : public EventObserver<2> {
  public:
   // cells_x × cells_y is the coarse-graining grid of T̄ and κ (independent of the engine's cells).
   GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y);
 
-  void on_collision(const CollisionRecord& record) override;
+  void on_collision(const CollisionRecord<2>& record) override;
   // Measure the configuration `state` at time t (collisions since production started) and
   // close the current interval.  `shear_velocity` and `shear_offset` are the image velocity U and
   // offset Δ at time t (they change with time under a shear protocol).

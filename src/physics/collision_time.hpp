@@ -1,10 +1,10 @@
-// Time until two free-flying disks touch, robust against round-off (Bannerman et al. 2014).
+// Time until two free-flying disks or spheres touch, robust against round-off (Bannerman et al. 2014).
 #pragma once
 
 #include <cmath>
 #include <limits>
 
-#include "geometry/vec2.hpp"
+#include "geometry/vec.hpp"
 
 namespace granule {
 
@@ -17,7 +17,8 @@ inline constexpr double kNever = std::numeric_limits<double>::infinity();
 //  * an approaching pair that touches or overlaps (|r| ≤ σ) collides now (τ = 0);
 //  * otherwise the smaller root of |r + vτ|² = σ² in the cancellation-free form
 //    τ = c / (−b + √(b² − v²c)), with b = r·v < 0 and c = r² − σ² > 0.
-inline double collision_time(Vec2 r, Vec2 v, double sigma) {
+template <int D>
+inline double collision_time(Vec<D> r, Vec<D> v, double sigma) {
   const double b = dot(r, v);
   if (b >= 0.0) return kNever;
   const double c = norm2(r) - sigma * sigma;

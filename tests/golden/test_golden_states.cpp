@@ -60,7 +60,7 @@ TEST_P(GoldenState, FinalStateHashIsUnchanged) {
   ASSERT_TRUE(grid.grid) << grid.error;
   const auto init = make_initial_state(p, 1.0, k.seed, Placement::kAuto);
   ASSERT_TRUE(init.error.empty()) << init.error;
-  Simulation sim(p, *grid.grid, init.state);
+  Simulation<2> sim(p, *grid.grid, init.state);
   // As granule run does: an elastic pre-run, then the restitution switched on.
   constexpr double kInf = std::numeric_limits<double>::infinity();
   sim.run(kInf, 2L * k.particles);

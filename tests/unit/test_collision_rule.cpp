@@ -32,14 +32,14 @@ TEST(CollisionRule, ConservesMomentumAndLosesExactEnergy) {
 }
 
 TEST(CollisionRule, HeadOnElasticSwapsVelocities) {
-  const auto out = collide({1.0, 0.0}, {-2.0, 0.0}, {1.0, 0.0}, 1.0);
+  const auto out = collide<2>({1.0, 0.0}, {-2.0, 0.0}, {1.0, 0.0}, 1.0);
   EXPECT_DOUBLE_EQ(out.v1.x, -2.0);
   EXPECT_DOUBLE_EQ(out.v2.x, 1.0);
 }
 
 TEST(CollisionRule, PerfectlyInelasticHeadOnSticks) {
   // e → 0 limit: equal normal velocities afterwards (the thesis restricts e > 0, this checks J).
-  const auto out = collide({1.0, 0.5}, {-1.0, 0.0}, {1.0, 0.0}, 0.0);
+  const auto out = collide<2>({1.0, 0.5}, {-1.0, 0.0}, {1.0, 0.0}, 0.0);
   EXPECT_DOUBLE_EQ(out.v1.x, out.v2.x);
   EXPECT_DOUBLE_EQ(out.v1.y, 0.5);
 }

@@ -15,8 +15,8 @@
 namespace granule {
 namespace {
 
-CollisionRecord record(double t, int a, int b, Vec2 contact, Vec2 k, Vec2 v21, double impulse = 1.0) {
-  CollisionRecord r;
+CollisionRecord<2> record(double t, int a, int b, Vec2 contact, Vec2 k, Vec2 v21, double impulse = 1.0) {
+  CollisionRecord<2> r;
   r.time = t;
   r.first = a;
   r.second = b;
@@ -79,12 +79,12 @@ TEST(FreePathStatistics, PathIsTheFlightSinceThePreviousCollision) {
   settings.max_length = 10.0;
   FreePathStatistics paths(3, settings, nullptr);
   paths.start();
-  CollisionRecord a = record(1.0, 0, 1, {}, {1, 0}, {1, 0});
+  CollisionRecord<2> a = record(1.0, 0, 1, {}, {1, 0}, {1, 0});
   a.first_velocity_after = {0.0, 2.0};   // disk 0 then flies up at speed 2
   a.second_velocity_after = {-1.0, 0.0};
   paths.on_collision(a);  // first collisions: no paths yet
   EXPECT_DOUBLE_EQ(paths.total().paths, 0.0);
-  CollisionRecord b = record(3.5, 2, 0, {}, {1, 0}, {1, 0});
+  CollisionRecord<2> b = record(3.5, 2, 0, {}, {1, 0}, {1, 0});
   paths.on_collision(b);  // disk 0 has flown 2 × 2.5 = 5 at α = π/2
   EXPECT_DOUBLE_EQ(paths.total().paths, 1.0);
   EXPECT_DOUBLE_EQ(paths.total().sum_length, 5.0);

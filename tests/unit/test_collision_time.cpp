@@ -11,37 +11,37 @@ namespace {
 
 TEST(CollisionTime, HeadOn) {
   // Gap 3 − 1 = 2 closed at relative speed 4: τ = 0.5.
-  EXPECT_DOUBLE_EQ(collision_time({3.0, 0.0}, {-4.0, 0.0}, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(collision_time<2>({3.0, 0.0}, {-4.0, 0.0}, 1.0), 0.5);
 }
 
 TEST(CollisionTime, OffsetImpactMatchesGeometry) {
   // Partner at (5, b) moving at −1 along x: contact when (5 − τ)² + b² = 1.
   for (double b : {0.0, 0.3, 0.9, 0.999999}) {
     const double expected = 5.0 - std::sqrt(1.0 - b * b);
-    EXPECT_NEAR(collision_time({5.0, b}, {-1.0, 0.0}, 1.0), expected, 1e-12) << b;
+    EXPECT_NEAR(collision_time<2>({5.0, b}, {-1.0, 0.0}, 1.0), expected, 1e-12) << b;
   }
 }
 
 TEST(CollisionTime, GrazingMissAndExactGraze) {
-  EXPECT_EQ(collision_time({5.0, 1.0 + 1e-12}, {-1.0, 0.0}, 1.0), kNever);
+  EXPECT_EQ(collision_time<2>({5.0, 1.0 + 1e-12}, {-1.0, 0.0}, 1.0), kNever);
   // Impact parameter exactly σ: tangential touch at τ = 5 (disc = 0).
-  EXPECT_NEAR(collision_time({5.0, 1.0}, {-1.0, 0.0}, 1.0), 5.0, 1e-6);
+  EXPECT_NEAR(collision_time<2>({5.0, 1.0}, {-1.0, 0.0}, 1.0), 5.0, 1e-6);
 }
 
 TEST(CollisionTime, TouchingApproachingCollidesNow) {
-  EXPECT_EQ(collision_time({1.0, 0.0}, {-1.0, 0.0}, 1.0), 0.0);
+  EXPECT_EQ(collision_time<2>({1.0, 0.0}, {-1.0, 0.0}, 1.0), 0.0);
 }
 
 TEST(CollisionTime, OverlapByRoundOff) {
   // Overlapping and approaching: now.  Overlapping and receding: never (Bannerman et al. 2014).
-  EXPECT_EQ(collision_time({1.0 - 1e-13, 0.0}, {-1.0, 0.1}, 1.0), 0.0);
-  EXPECT_EQ(collision_time({1.0 - 1e-13, 0.0}, {1.0, 0.1}, 1.0), kNever);
+  EXPECT_EQ(collision_time<2>({1.0 - 1e-13, 0.0}, {-1.0, 0.1}, 1.0), 0.0);
+  EXPECT_EQ(collision_time<2>({1.0 - 1e-13, 0.0}, {1.0, 0.1}, 1.0), kNever);
 }
 
 TEST(CollisionTime, RecedingAndParallel) {
-  EXPECT_EQ(collision_time({3.0, 0.0}, {1.0, 0.0}, 1.0), kNever);
-  EXPECT_EQ(collision_time({3.0, 0.0}, {0.0, 1.0}, 1.0), kNever);
-  EXPECT_EQ(collision_time({3.0, 0.0}, {0.0, 0.0}, 1.0), kNever);
+  EXPECT_EQ(collision_time<2>({3.0, 0.0}, {1.0, 0.0}, 1.0), kNever);
+  EXPECT_EQ(collision_time<2>({3.0, 0.0}, {0.0, 1.0}, 1.0), kNever);
+  EXPECT_EQ(collision_time<2>({3.0, 0.0}, {0.0, 0.0}, 1.0), kNever);
 }
 
 TEST(CrossingTime, Linear) {

@@ -80,7 +80,8 @@ max_length = 0.5
 
 // Every key of the README's configuration reference.
 const std::vector<std::string> kKeys = {
-    "seed", "system.particles", "system.area_fraction", "system.diameter", "system.box", "system.restitution",
+    "seed", "system.particles", "system.area_fraction", "system.packing_fraction", "system.diameter",
+    "system.diameters", "system.masses", "system.box", "system.restitution",
     "system.tc_duration", "boundary.kind", "boundary.shear_velocity", "initial.temperature", "initial.equilibrate",
     "initial.placement", "run.until_collisions_per_particle", "run.until_time", "output.every_collisions_per_particle",
     "output.every_time", "output.snapshot_every_collisions_per_particle", "output.snapshot_every_time",
@@ -207,8 +208,8 @@ std::string violated_invariant(const RunConfig& c) {
   if (!(std::isfinite(s.diameter) && s.diameter > 0.0)) return "diameter not finite positive";
   if (std::max(s.length_x, s.length_y) / s.diameter > 1e9 * (1.0 + 1e-12)) return "more than 1e9 diameters across the box";
   const double nu = M_PI * n * s.diameter * s.diameter / (4.0 * s.length_x * s.length_y);
-  if (!(c.area_fraction > 0.0 && c.area_fraction < M_PI / (2.0 * std::sqrt(3.0)))) return "area fraction outside (0, close packing)";
-  if (std::abs(c.area_fraction - nu) > 1e-12 * nu) return "area fraction does not match N, σ and the box";
+  if (!(c.packing_fraction > 0.0 && c.packing_fraction < M_PI / (2.0 * std::sqrt(3.0)))) return "area fraction outside (0, close packing)";
+  if (std::abs(c.packing_fraction - nu) > 1e-12 * nu) return "area fraction does not match N, σ and the box";
   if (!(s.restitution > 0.0 && s.restitution <= 1.0)) return "restitution outside (0, 1]";
   if (!finite_in(s.tc_duration, 0.0, INFINITY)) return "tc_duration not finite non-negative";
   if (!finite_in(c.initial_temperature, 1e-60, 1e60)) return "T_i outside [1e-60, 1e60]";

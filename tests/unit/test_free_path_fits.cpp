@@ -65,7 +65,7 @@ PathHistogram observed_paths(int paths, const FreePathSettings& settings, Draw&&
     return Vec2{length * std::cos(alpha), length * std::sin(alpha)};
   };
   for (int k = 0; k <= paths / 2; ++k) {
-    CollisionRecord r;
+    CollisionRecord<2> r;
     r.time = k;
     r.first = 0;
     r.second = 1;

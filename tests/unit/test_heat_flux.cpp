@@ -99,8 +99,8 @@ TEST(KineticHeatFlux, DriftingAnisotropicMaxwellianHasNoFluxWithinItsStandardErr
 }
 
 // A collision record as the engine writes it, for disks inside the box.
-CollisionRecord record_of(Vec2 r1, Vec2 v1, Vec2 v2_partner, Vec2 k_hat, double diameter, double e) {
-  CollisionRecord r;
+CollisionRecord<2> record_of(Vec2 r1, Vec2 v1, Vec2 v2_partner, Vec2 k_hat, double diameter, double e) {
+  CollisionRecord<2> r;
   r.first_position = r1;
   r.contact_point = r1 + (0.5 * diameter) * k_hat;
   r.contact_normal = k_hat;
@@ -123,7 +123,7 @@ TEST(CollisionalHeatFlux, OneCollisionCarriesHalfTheDifferenceOfTheEnergyChanges
   const FieldGrid grid{1, 1, 1.0, 1.0};
   CollisionalStressField field(grid, sigma);
   field.restart(0.0);
-  const CollisionRecord r = record_of({0.3, 0.4}, v1, v2, k, sigma, e);
+  const CollisionRecord<2> r = record_of({0.3, 0.4}, v1, v2, k, sigma, e);
   field.on_collision(r);
   const CollisionalStress stress = field.stress(t);
   const HeatFlux q = collisional_heat_flux(stress, {reference.x}, {reference.y});
@@ -146,14 +146,14 @@ TEST(CollisionalHeatFlux, PairAcrossTheLeesEdwardsBoundaryIsTakenInTheFrameOfThe
   const double sigma = 0.1, length_y = 1.0, u = 3.0;
   const Vec2 v1{0.5, 1.0}, v2{-0.2, -0.7}, k{0.0, 1.0};
   const Vec2 image_velocity{v2.x + u, v2.y};
-  CollisionRecord above = record_of({0.5, 0.98}, v1, image_velocity, k, sigma, 0.9);
+  CollisionRecord<2> above = record_of({0.5, 0.98}, v1, image_velocity, k, sigma, 0.9);
   above.second_velocity_before = v2;  // the record holds disk 2's own velocity
   above.image_y = 1;
   above.contact_point = {0.5 + 0.37, 0.98 + 0.05 - length_y};  // mapped: shifted by Δ = 0.37 and down by L_y
   const Vec2 s_above = pair_velocity_at_contact(above, sigma, length_y);
   EXPECT_NEAR(s_above.x, 0.5 * (v1.x - u + v2.x), 1e-15);
   EXPECT_NEAR(s_above.y, 0.5 * (v1.y + v2.y), 1e-15);
-  CollisionRecord below = record_of({0.5, 0.92}, v1, image_velocity, k, sigma, 0.9);
+  CollisionRecord<2> below = record_of({0.5, 0.92}, v1, image_velocity, k, sigma, 0.9);
   below.second_velocity_before = v2;
   below.image_y = 1;
   const Vec2 s_below = pair_velocity_at_contact(below, sigma, length_y);

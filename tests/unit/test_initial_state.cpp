@@ -69,8 +69,8 @@ TEST(InitialState, PlacementGridHasAtMostNCellsOfSideAtLeastSigma) {
         const PlacementGrid grid(p);
         EXPECT_LE(grid.head.size(), static_cast<std::size_t>(n)) << "N = " << n << ", ν = " << nu;
         EXPECT_EQ(grid.next.size(), static_cast<std::size_t>(n));
-        EXPECT_TRUE(grid.cell_width >= p.diameter || grid.nx == 1) << "N = " << n << ", ν = " << nu;
-        EXPECT_TRUE(grid.cell_height >= p.diameter || grid.ny == 1) << "N = " << n << ", ν = " << nu;
+        EXPECT_TRUE(grid.width[0] >= p.diameter || grid.count[0] == 1) << "N = " << n << ", ν = " << nu;
+        EXPECT_TRUE(grid.width[1] >= p.diameter || grid.count[1] == 1) << "N = " << n << ", ν = " << nu;
       }
     }
   }

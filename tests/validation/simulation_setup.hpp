@@ -24,11 +24,11 @@ inline SystemParams make_system(int n, double nu, double e, double shear_velocit
   return p;
 }
 
-inline Simulation make_simulation(const SystemParams& p, std::uint64_t seed, double temperature = 1.0) {
+inline Simulation<2> make_simulation(const SystemParams& p, std::uint64_t seed, double temperature = 1.0) {
   const auto grid = choose_cell_grid({p.length_x, p.length_y, p.diameter, p.particles, p.shear_velocity != 0.0, 1.0, std::nullopt});
   const auto init = make_initial_state(p, temperature, seed, Placement::kAuto);
   EXPECT_TRUE(init.error.empty()) << init.error;
-  return Simulation(p, *grid.grid, init.state);
+  return Simulation<2>(p, *grid.grid, init.state);
 }
 
 inline std::int64_t collisions_for(const SystemParams& p, double c) {

@@ -74,7 +74,7 @@ struct EquilibriumRun {
   double temperature = 0.0;
 
   EquilibriumRun() {
-    Simulation sim = make_simulation(params, 21);
+    Simulation<2> sim = make_simulation(params, 21);
     sim.run(kInf, collisions_for(params, 20.0));
     const ShearFrame frame{1.0, 1.0, 0.0};
     GlobalDiagnostics diagnostics(params, 10, 10);
@@ -84,7 +84,7 @@ struct EquilibriumRun {
     settings.max_length = 12.0 / (2.0 * std::sqrt(2.0) * 3000.0 * params.diameter);
     settings.length_bins = 240;
     FreePathStatistics free_paths(params.particles, settings, nullptr);
-    for (EventObserver* o : std::vector<EventObserver*>{&diagnostics, &stress, &free_paths}) sim.add_observer(o);
+    for (EventObserver<2>* o : std::vector<EventObserver<2>*>{&diagnostics, &stress, &free_paths}) sim.add_observer(o);
     sim.run(kInf, sim.collisions() + collisions_for(params, 2.0));  // every disk's flight history known
     sim.add_observer(&impacts);
     free_paths.start();
@@ -224,7 +224,7 @@ TEST(CollisionStatisticsValidation, FreePathTailDecaysAsEnskogPredicts) {
 // stresses transport x-momentum down the gradient (τ_xy < 0 for γ > 0).
 TEST(FieldsValidation, LeesEdwardsProfileIsLinearWithSlopeGammaAndShearStressesAreNegative) {
   const SystemParams p = make_system(2000, 0.05, 0.9, 20.0);
-  Simulation sim = make_simulation(p, 5);
+  Simulation<2> sim = make_simulation(p, 5);
   const ShearFrame frame{1.0, 1.0, p.shear_velocity};
   const FieldGrid grid{8, 16, 1.0, 1.0};
   sim.run(kInf, collisions_for(p, 20.0));
@@ -264,8 +264,8 @@ TEST(FieldsValidation, LeesEdwardsProfileIsLinearWithSlopeGammaAndShearStressesA
 // bit-identical states.
 TEST(FieldsValidation, ObserversDoNotChangeTheTrajectory) {
   const SystemParams p = make_system(1000, 0.2, 0.8, 5.0);
-  Simulation plain = make_simulation(p, 9);
-  Simulation measured = make_simulation(p, 9);
+  Simulation<2> plain = make_simulation(p, 9);
+  Simulation<2> measured = make_simulation(p, 9);
   const FieldGrid grid{6, 6, 1.0, 1.0};
   LocalDensity density(grid);
   density.update(measured.state());
@@ -273,7 +273,7 @@ TEST(FieldsValidation, ObserversDoNotChangeTheTrajectory) {
   ImpactParameterStatistics impacts(p.diameter, 50, 100, {{0.0, 1e9}}, &density);
   FreePathStatistics paths(p.particles, FreePathSettings{}, &density);
   paths.start();
-  for (EventObserver* o : std::vector<EventObserver*>{&stress, &impacts, &paths}) measured.add_observer(o);
+  for (EventObserver<2>* o : std::vector<EventObserver<2>*>{&stress, &impacts, &paths}) measured.add_observer(o);
   plain.run(kInf, collisions_for(p, 5.0));
   measured.run(kInf, collisions_for(p, 5.0));
   const ParticleState a = plain.state(), b = measured.state();

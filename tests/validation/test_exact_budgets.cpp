@@ -18,11 +18,11 @@
 namespace granule {
 namespace {
 
-struct Budget final : EventObserver {
-  const Simulation* sim = nullptr;  // U at the moment of each crossing: sim->image_velocity()
+struct Budget final : EventObserver<2> {
+  const Simulation<2>* sim = nullptr;  // U at the moment of each crossing: sim->image_velocity()
   double energy = 0.0, momentum_x = 0.0, magnitude = 0.0;  // predicted changes; Σ|terms| for round-off
   std::int64_t collisions = 0, crossings = 0, wrong_crossing_shifts = 0, wrong_image_velocities = 0;
-  void on_collision(const CollisionRecord& r) override {
+  void on_collision(const CollisionRecord<2>& r) override {
     const double vn = r.relative_velocity.x * r.contact_normal.x + r.relative_velocity.y * r.contact_normal.y;
     const double e = r.restitution;
     const double impulse = 0.5 * (1.0 + e) * vn;  // on disk 2, along k̂
@@ -89,7 +89,7 @@ TEST_P(ExactBudget, MomentumAndEnergyChangeOnlyAsThePhysicsSays) {
   SystemParams p = make_system(500, k.area_fraction, k.restitution, k.shear_velocity);
   p.tc_duration = k.tc_duration;
   p.shear_history = k.history;
-  Simulation sim = make_simulation(p, 41);
+  Simulation<2> sim = make_simulation(p, 41);
   sim.start_production(k.restitution);  // the protocol runs from here
   Budget budget;
   budget.sim = &sim;

@@ -29,15 +29,15 @@ class ExactContinuation : public ::testing::TestWithParam<bool> {
     return p;
   }
   // In production from the start, so that the protocol runs.
-  Simulation make_driven(const SystemParams& p, std::uint64_t seed) const {
-    Simulation sim = make_simulation(p, seed);
+  Simulation<2> make_driven(const SystemParams& p, std::uint64_t seed) const {
+    Simulation<2> sim = make_simulation(p, seed);
     sim.start_production(p.restitution);
     return sim;
   }
 };
 
 // The whole engine, bit for bit: two runs are the same run iff their checkpoints are equal.
-void expect_same_engine(const Simulation& a, const Simulation& b) {
+void expect_same_engine(const Simulation<2>& a, const Simulation<2>& b) {
   StateArchive sa, sb;
   a.save(sa, "");
   b.save(sb, "");
@@ -51,9 +51,9 @@ void expect_same_engine(const Simulation& a, const Simulation& b) {
   EXPECT_EQ(a.events(), b.events());
 }
 
-struct Counter final : EventObserver {
+struct Counter final : EventObserver<2> {
   std::int64_t collisions = 0, crossings = 0;
-  void on_collision(const CollisionRecord&) override { ++collisions; }
+  void on_collision(const CollisionRecord<2>&) override { ++collisions; }
   void on_boundary_crossing(const BoundaryCrossingRecord&) override { ++crossings; }
 };
 
@@ -61,8 +61,8 @@ constexpr double kSpan = 120.0;  // collisions per particle
 
 TEST_P(ExactContinuation, SameSeedSameTrajectory) {
   const SystemParams p = sheared_tc_system();
-  Simulation a = make_driven(p, 99);
-  Simulation b = make_driven(p, 99);
+  Simulation<2> a = make_driven(p, 99);
+  Simulation<2> b = make_driven(p, 99);
   a.run(kInf, collisions_for(p, kSpan));
   b.run(kInf, collisions_for(p, kSpan));
   expect_same_engine(a, b);
@@ -70,11 +70,11 @@ TEST_P(ExactContinuation, SameSeedSameTrajectory) {
 
 TEST_P(ExactContinuation, StopsReadsAndObserversChangeNothing) {
   const SystemParams p = sheared_tc_system();
-  Simulation reference = make_driven(p, 7);
+  Simulation<2> reference = make_driven(p, 7);
   ASSERT_EQ(reference.run(kInf, collisions_for(p, kSpan)), StopReason::kCollisionsReached);
   ASSERT_GE(reference.events(), 100 * p.particles) << "the span must cover many clock re-bases";
 
-  Simulation driven = make_driven(p, 7);
+  Simulation<2> driven = make_driven(p, 7);
   Counter counter;
   driven.add_observer(&counter);
   std::mt19937_64 random(3);
@@ -99,17 +99,17 @@ TEST_P(ExactContinuation, StopsReadsAndObserversChangeNothing) {
 
 TEST_P(ExactContinuation, RestoredCheckpointsContinueTheSameRun) {
   const SystemParams p = sheared_tc_system();
-  Simulation reference = make_driven(p, 11);
+  Simulation<2> reference = make_driven(p, 11);
   reference.run(kInf, collisions_for(p, kSpan));
 
-  auto current = std::make_unique<Simulation>(make_driven(p, 11));
+  auto current = std::make_unique<Simulation<2>>(make_driven(p, 11));
   const CellGrid grid = current->grid();
   int restores = 0;
   for (double c = 0.37; c < kSpan; c += 3.1, ++restores) {
     current->run(kInf, collisions_for(p, c));
     StateArchive archive;
     current->save(archive, "engine/");
-    current = std::make_unique<Simulation>(p, grid, archive, "engine/");
+    current = std::make_unique<Simulation<2>>(p, grid, archive, "engine/");
   }
   current->run(kInf, collisions_for(p, kSpan));
   EXPECT_GE(restores, 12);
@@ -118,13 +118,13 @@ TEST_P(ExactContinuation, RestoredCheckpointsContinueTheSameRun) {
 
 TEST_P(ExactContinuation, CheckpointOfAnotherSystemIsRefused) {
   const SystemParams p = sheared_tc_system();
-  Simulation sim = make_driven(p, 1);
+  Simulation<2> sim = make_driven(p, 1);
   sim.run(kInf, collisions_for(p, 1.0));
   StateArchive archive;
   sim.save(archive, "");
   SystemParams other = p;
   other.shear_velocity = 5.0;
-  EXPECT_THROW(Simulation(other, sim.grid(), archive, ""), std::runtime_error);
+  EXPECT_THROW(Simulation<2>(other, sim.grid(), archive, ""), std::runtime_error);
   // A damaged checkpoint (one disk moved onto another) fails the engine's invariants.
   auto x = archive.get<double>("x");
   auto y = archive.get<double>("y");
@@ -135,12 +135,12 @@ TEST_P(ExactContinuation, CheckpointOfAnotherSystemIsRefused) {
   y[0] = y[1] + vy[1] * (t_now - t[1]) - vy[0] * (t_now - t[0]);
   archive.put("x", x);
   archive.put("y", y);
-  EXPECT_THROW(Simulation(p, sim.grid(), archive, ""), std::runtime_error);
+  EXPECT_THROW(Simulation<2>(p, sim.grid(), archive, ""), std::runtime_error);
 }
 
 TEST_P(ExactContinuation, InvariantsHoldAlongARun) {
   const SystemParams p = sheared_tc_system();
-  Simulation sim = make_driven(p, 5);
+  Simulation<2> sim = make_driven(p, 5);
   for (int k = 1; k <= 20; ++k) {
     sim.run(kInf, collisions_for(p, 0.5 * k));
     ASSERT_NO_THROW(sim.check_invariants()) << "after c = " << 0.5 * k;

@@ -30,7 +30,7 @@ TEST(F1ElasticEquilibrium, MaxwellianIsRecovered) {
   const auto grid = choose_cell_grid({p.length_x, p.length_y, p.diameter, p.particles, false, 1.0, std::nullopt});
   const auto init = make_initial_state(p, 1.0, 21, Placement::kAuto);
   ASSERT_TRUE(init.error.empty()) << init.error;
-  Simulation sim(p, *grid.grid, init.state);
+  Simulation<2> sim(p, *grid.grid, init.state);
   const double inf = std::numeric_limits<double>::infinity();
   std::int64_t collisions = 5 * p.particles;  // forget the initial state
   sim.run(inf, collisions);

@@ -28,7 +28,7 @@ class ElasticEquilibrium : public ::testing::TestWithParam<double> {};
 TEST_P(ElasticEquilibrium, PressureCollisionRateAndFlatness) {
   const double nu = GetParam();
   const SystemParams p = make_system(3000, nu, 1.0);
-  Simulation sim = make_simulation(p, 11);
+  Simulation<2> sim = make_simulation(p, 11);
   sim.run(kInf, collisions_for(p, 20.0));  // melt the lattice, forget the initial state
   GlobalDiagnostics diagnostics(p, 12, 12);
   sim.add_observer(&diagnostics);
@@ -69,7 +69,7 @@ TEST_P(Invariants, EnergyMomentumNoOverlap) {
   const double nu = GetParam();
   for (double e : {1.0, 0.8}) {
     const SystemParams p = make_system(600, nu, e);
-    Simulation sim = make_simulation(p, 3);
+    Simulation<2> sim = make_simulation(p, 3);
     const ParticleState before = sim.state();
     sim.run(kInf, collisions_for(p, 30.0));
     const ParticleState after = sim.state();
@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(Densities, Invariants, ::testing::Values(0.05, 0.3, 0.5
 TEST(FreeCooling, LogTemperatureSlopePerCollision) {
   const double e = 0.9;
   const SystemParams p = make_system(4000, 0.05, 1.0);
-  Simulation sim = make_simulation(p, 21);
+  Simulation<2> sim = make_simulation(p, 21);
   sim.run(kInf, collisions_for(p, 5.0));
   sim.start_production(e);
   GlobalDiagnostics diagnostics(p, 14, 14);
@@ -135,7 +135,7 @@ TEST(LeesEdwards, LinearProfileAndSteadyTemperature) {
   SystemParams p = make_system(4000, nu, 1.0);
   const double per_gamma2 = theory::steady_shear_temperature_tan_fit(e, 1.0, p.diameter, nu);
   p.shear_velocity = std::sqrt(1.0 / per_gamma2);  // steady T̄ ≈ 1 according to (3.1)
-  Simulation sim = make_simulation(p, 8);
+  Simulation<2> sim = make_simulation(p, 8);
   sim.run(kInf, collisions_for(p, 2.0));
   sim.start_production(e);
   sim.run(kInf, collisions_for(p, 40.0));  // reach the steady state

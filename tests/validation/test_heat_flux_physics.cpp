@@ -19,12 +19,12 @@ namespace granule {
 namespace {
 
 // Σ J k̂ (k̂·s) with s the pair velocity in the lab frame of the contact point's cell, from U.
-struct GlobalEnergyTransfer final : EventObserver {
+struct GlobalEnergyTransfer final : EventObserver<2> {
   double shear_velocity = 0.0, diameter = 0.0, length_y = 1.0;
   Vec2 sum{0.0, 0.0};
   double magnitude = 0.0;
   std::int64_t mapped_contacts = 0, image_contacts = 0;
-  void on_collision(const CollisionRecord& r) override {
+  void on_collision(const CollisionRecord<2>& r) override {
     Vec2 s = 0.5 * (r.first_velocity_before + r.second_velocity_before);
     s.x += 0.5 * r.image_y * shear_velocity;  // the partner is an image moving at v₂ + i_y U
     const double unmapped_y = r.first_position.y + 0.5 * diameter * r.contact_normal.y;
@@ -42,7 +42,7 @@ struct GlobalEnergyTransfer final : EventObserver {
 
 TEST(CollisionalHeatFlux, CellsSumToTheGlobalTransferOfTheRecordsUnderLeesEdwards) {
   const SystemParams p = make_system(500, 0.3, 0.8, 4.0);
-  Simulation sim = make_simulation(p, 17);
+  Simulation<2> sim = make_simulation(p, 17);
   const FieldGrid grid{4, 5, p.length_x, p.length_y};
   CollisionalStressField field(grid, p.diameter);
   GlobalEnergyTransfer global;
@@ -74,7 +74,7 @@ TEST(CollisionalHeatFlux, DriftingElasticGasAtEquilibriumCarriesNoHeat) {
   ASSERT_TRUE(init.error.empty()) << init.error;
   for (std::size_t i = 0; i < init.state.size(); ++i) init.state.vx[i] += drift.x, init.state.vy[i] += drift.y;
   const auto engine_grid = choose_cell_grid({p.length_x, p.length_y, p.diameter, p.particles, false, 1.0, std::nullopt});
-  Simulation sim(p, *engine_grid.grid, init.state);
+  Simulation<2> sim(p, *engine_grid.grid, init.state);
   sim.run(kInf, collisions_for(p, 5.0));  // forget the initial state
   const FieldGrid box{1, 1, p.length_x, p.length_y};
   CollisionalStressField field(box, p.diameter);

@@ -14,7 +14,7 @@
 namespace granule {
 namespace {
 
-Simulation make(double tc) {
+Simulation<2> make(double tc) {
   SystemParams p;
   p.particles = 400;
   p.diameter = std::sqrt(4.0 * 0.4 / (M_PI * 400));
@@ -22,12 +22,12 @@ Simulation make(double tc) {
   p.tc_duration = tc;
   const auto grid = choose_cell_grid({1.0, 1.0, p.diameter, p.particles, false, 1.0, std::nullopt});
   const auto init = make_initial_state(p, 1.0, 17, Placement::kRandom);
-  return Simulation(p, *grid.grid, init.state);
+  return Simulation<2>(p, *grid.grid, init.state);
 }
 
 TEST(InelasticCollapse, DetectedWithoutTcAndAvoidedWithIt) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  Simulation plain = make(0.0);
+  Simulation<2> plain = make(0.0);
   const StopReason reason = plain.run(kInf, 400L * 2000);
   ASSERT_EQ(reason, StopReason::kInelasticCollapse) << "c reached " << plain.collisions_per_particle();
   EXPECT_GE(plain.collapse().first, 0);
@@ -36,7 +36,7 @@ TEST(InelasticCollapse, DetectedWithoutTcAndAvoidedWithIt) {
 
   // The same system with t_c far below the initial mean free time (~1e-2 here) runs well past the
   // point where the plain one collapsed, and its clock keeps moving.
-  Simulation tc = make(1e-7);
+  Simulation<2> tc = make(1e-7);
   const std::int64_t beyond = 3 * plain.collisions();
   EXPECT_EQ(tc.run(kInf, beyond), StopReason::kCollisionsReached);
   EXPECT_GT(tc.time(), plain.time());
@@ -49,9 +49,9 @@ TEST(InelasticCollapse, DetectedWithoutTcAndAvoidedWithIt) {
 // particle (as frequent outputs do) detects the collapse at exactly the same collision.
 TEST(InelasticCollapse, DetectedAlikeWhenStoppedEveryTenthCollisionPerParticle) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  Simulation reference = make(0.0);
+  Simulation<2> reference = make(0.0);
   ASSERT_EQ(reference.run(kInf, 400L * 2000), StopReason::kInelasticCollapse);
-  Simulation stopped = make(0.0);
+  Simulation<2> stopped = make(0.0);
   StopReason reason = StopReason::kCollisionsReached;
   for (std::int64_t target = 40; reason == StopReason::kCollisionsReached && target <= 400L * 2000; target += 40) {
     reason = stopped.run(kInf, target);

@@ -36,13 +36,13 @@ SystemParams driven_system(const Drive& d) {
 }
 
 // Production from the §1.4.2 state with no pre-run: the protocol starts at once.
-Simulation driven_simulation(const SystemParams& p, std::uint64_t seed, double held_velocity) {
+Simulation<2> driven_simulation(const SystemParams& p, std::uint64_t seed, double held_velocity) {
   const auto grid = choose_cell_grid({p.length_x, p.length_y, p.diameter, p.particles, true, 1.0, std::nullopt});
   const auto init = make_initial_state(p, 1.0, seed, Placement::kAuto, held_velocity);
   EXPECT_TRUE(init.error.empty()) << init.error;
   ClockState clock;
   clock.held_shear_velocity = held_velocity;
-  Simulation sim(p, *grid.grid, init.state, clock);
+  Simulation<2> sim(p, *grid.grid, init.state, clock);
   sim.start_production(p.restitution);
   return sim;
 }
@@ -54,7 +54,7 @@ TEST(ShearProtocols, ImageVelocityAndOffsetFollowTheProtocol) {
   for (const Drive& d : drives()) {
     const SystemParams p = driven_system(d);
     const ShearProtocol protocol(p.shear_velocity, p.shear_history);
-    Simulation sim = driven_simulation(p, 5, protocol.velocity(0.0));
+    Simulation<2> sim = driven_simulation(p, 5, protocol.velocity(0.0));
     const double offset0 = sim.shear_offset();
     const double scale = protocol.velocity_scale();
     double worst_velocity = 0.0, worst_offset = 0.0;
@@ -89,7 +89,7 @@ TEST(ShearProtocols, RampWithVanishingTimeIsTheConstantDrive) {
     Drive d{"ramp", u0, {}};
     d.history.ramp_time = ramp_time;
     const SystemParams p = driven_system(d);
-    Simulation sim = driven_simulation(p, 9, u0);  // both start from the same profile of U₀
+    Simulation<2> sim = driven_simulation(p, 9, u0);  // both start from the same profile of U₀
     sim.run(kInf, collisions_for(p, 0.5));
     return sim.state();
   };

@@ -47,7 +47,7 @@ TEST(ShearTemperature, ExactLinearShearHasNoTemperature) {
 // Periodic boxes have no imposed profile: both columns are the thesis's T̄, bit for bit.
 TEST(ShearTemperature, PeriodicColumnsAreEqual) {
   const SystemParams p = make_system(1000, 0.05, 0.8);
-  Simulation sim = make_simulation(p, 4);
+  Simulation<2> sim = make_simulation(p, 4);
   sim.start_production(p.restitution);
   GlobalDiagnostics diagnostics(p, 7, 7);
   for (int c = 1; c <= 5; ++c) {
@@ -109,7 +109,7 @@ TEST(ShearTemperature, ProfileSubtractedTemperatureIsTheGlobalOneMinusCellVeloci
   const double e = 0.9, nu = 0.05;
   const SystemParams p = make_system(2000, nu, e, 20.0);
   const ShearFrame frame{p.length_x, p.length_y, p.shear_velocity};
-  Simulation sim = make_simulation(p, 3);
+  Simulation<2> sim = make_simulation(p, 3);
   sim.run(kInf, collisions_for(p, 2.0));
   sim.start_production(e);
   sim.run(kInf, collisions_for(p, 30.0));  // steady state: the relaxation takes ~1/(1 − ẽ²) ≈ 5 c

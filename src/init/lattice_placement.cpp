@@ -1,0 +1,88 @@
+// Lattices with random vacancies for dense initial states (placement.hpp): the triangular lattice
+// of 2D runs and the face-centred cubic lattice of 3D runs, each with the largest nearest-neighbour
+// distance the box allows for N sites.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "init/placement.hpp"
+
+namespace granule {
+
+namespace {
+
+// Even row counts keep the alternating offset of the rows periodic.  The nearest-neighbour
+// distance is at most 2 a_y, so once 2 a_y falls below the best distance no later row count
+// can win.
+Lattice densest_triangular_lattice(const SystemParams& p) {
+  const std::int64_t n = p.particles;
+  Lattice best;
+  for (std::int64_t rows = 2; rows <= 2 * n + 2; rows += 2) {
+    const std::int64_t columns = (n + rows - 1) / rows;
+    const double ax = p.length_x / static_cast<double>(columns);
+    const double ay = p.length_y / static_cast<double>(rows);
+    const double distance = std::min({ax, std::sqrt(0.25 * ax * ax + ay * ay), 2.0 * ay});
+    if (distance > best.spacing) best = Lattice{2, {columns, rows, 1}, distance};
+    if (2.0 * ay < best.spacing) break;
+  }
+  return best;
+}
+
+// Cubic cells a_x × a_y × a_z with sites at (0,0,0), (½,½,0), (½,0,½), (0,½,½): the nearest
+// neighbours are at half a face diagonal or at a whole cell edge.  For each n_x, n_y the fewest
+// layers n_z that hold N sites are best; a count whose edge L/n is already below the best
+// distance cannot win, which bounds both loops.
+Lattice densest_fcc_lattice(const SystemParams& p) {
+  const std::int64_t n = p.particles;
+  Lattice best{3, {1, 1, 1}, 0.0};
+  for (std::int64_t nx = 1; p.length_x / static_cast<double>(nx) >= best.spacing && nx <= n; ++nx) {
+    for (std::int64_t ny = 1; p.length_y / static_cast<double>(ny) >= best.spacing && nx * ny <= n; ++ny) {
+      const std::int64_t nz = std::max<std::int64_t>(1, (n + 4 * nx * ny - 1) / (4 * nx * ny));
+      const double ax = p.length_x / static_cast<double>(nx);
+      const double ay = p.length_y / static_cast<double>(ny);
+      const double az = p.length_z / static_cast<double>(nz);
+      const double distance = std::min({ax, ay, az, 0.5 * std::sqrt(ax * ax + ay * ay),
+                                        0.5 * std::sqrt(ax * ax + az * az), 0.5 * std::sqrt(ay * ay + az * az)});
+      if (distance > best.spacing) best = Lattice{3, {nx, ny, nz}, distance};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+Lattice densest_lattice(const SystemParams& p) {
+  return p.dimension == 3 ? densest_fcc_lattice(p) : densest_triangular_lattice(p);
+}
+
+bool place_on_lattice(const SystemParams& p, Random& rng, ParticleState& out) {
+  const Lattice lattice = densest_lattice(p);
+  if (lattice.spacing < p.diameter * (1.0 + 1e-9)) return false;
+  const auto& cells = lattice.cells;
+  std::array<double, 3> edge{p.length_x / static_cast<double>(cells[0]), p.length_y / static_cast<double>(cells[1]),
+                             p.length_z / static_cast<double>(cells[2])};
+  std::vector<std::int64_t> sites(static_cast<std::size_t>(lattice.sites()));
+  std::iota(sites.begin(), sites.end(), 0);
+  // The FCC basis in units of the cell edges.
+  constexpr double kBasis[4][3] = {{0.0, 0.0, 0.0}, {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}};
+  for (std::size_t k = 0; k < static_cast<std::size_t>(p.particles); ++k) {  // partial Fisher–Yates
+    const std::size_t pick = k + static_cast<std::size_t>(rng.below(sites.size() - k));
+    std::swap(sites[k], sites[pick]);
+    if (p.dimension == 2) {
+      const std::int64_t row = sites[k] / cells[0];
+      const std::int64_t column = sites[k] % cells[0];
+      out.x[k] = (static_cast<double>(column) + 0.25 + 0.5 * static_cast<double>(row % 2)) * edge[0];
+      out.y[k] = (static_cast<double>(row) + 0.5) * edge[1];
+    } else {  // site = 4 (i_x + n_x (i_y + n_y i_z)) + basis; a quarter cell off the box faces
+      const std::int64_t cell = sites[k] / 4;
+      const double* basis = kBasis[sites[k] % 4];
+      const std::array<std::int64_t, 3> index{cell % cells[0], (cell / cells[0]) % cells[1], cell / (cells[0] * cells[1])};
+      for (int a = 0; a < 3; ++a) {
+        out.position(a)[k] = (static_cast<double>(index[a]) + 0.25 + basis[a]) * edge[a];
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace granule
