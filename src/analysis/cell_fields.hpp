@@ -1,11 +1,14 @@
-// Coarse-grained fields of thesis §1.4.3 from particle configurations: number density ρ(r),
-// velocity V(r) (momentum over mass), temperature T(r) (1.3), kinetic stress τ^(k) (1.4) via the
-// identity (1.5), kinetic pressure (half trace), vorticity and the kinetic heat flux
-// q^(k) = Σ ½|c|² c / cell area, c = v − V(r) (docs/macrostructure.md).  Unit mass: ρ is both the
-// number and the mass density (particles per unit area).
+// Coarse-grained fields of thesis §1.4.3 from particle configurations, in 2D and 3D: number density
+// n(r) (particles per unit area or volume), velocity V(r) (momentum over mass), temperature T(r)
+// per degree of freedom (1.3), T = Σ m|v − V|² / (d · count), kinetic stress τ^(k) = Σ m v'v' / cell
+// (1.4) via the identity (1.5), kinetic pressure Tr τ^(k) / d = n T, the z component of the
+// vorticity and the kinetic heat flux q^(k) = Σ ½ m|c|² c / cell, c = v − V(r)
+// (docs/macrostructure.md).  Unit masses unless the configuration carries masses (polydisperse):
+// then V, τ^(k), T and q^(k) are mass-weighted and ρ stays the number density.  In 2D with unit
+// masses every value is computed as before 3D existed, operation for operation.
 //
-// Fields come from cell moments (count, Σv, Σvv, Σ|v|²v).  Moments add up, so the same code gives the
-// instantaneous fields of one configuration and the interval-averaged fields of many (sums over
+// Fields come from cell moments (count, Σmv, Σmvv, Σm|v|²v).  Moments add up, so the same code gives
+// the instantaneous fields of one configuration and the interval-averaged fields of many (sums over
 // K configurations, ρ divided by K): V and T are then mass-weighted averages, as the ensemble
 // averages of §5.2.
 #pragma once
@@ -23,30 +26,49 @@ struct CellMoments {
   FieldGrid grid;
   int configurations = 0;  // how many configurations were added
   std::vector<double> count, px, py, pxx, pxy, pyy;
-  std::vector<double> energy_flux_x, energy_flux_y;  // Σ |v|² v: the third moments of q^(k)
+  std::vector<double> energy_flux_x, energy_flux_y;  // Σ m|v|² v: the third moments of q^(k)
+  std::vector<double> pz, pxz, pyz, pzz, energy_flux_z;  // 3D only (empty in 2D)
+  // Σ m per cell: kept only once a configuration with masses was added (with unit masses it is `count`).
+  std::vector<double> mass;
 
   explicit CellMoments(const FieldGrid& g);
-  // Add one configuration.  With `subtract_shear_profile`, each particle's velocity is taken
-  // relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of `frame` before it is summed.
+  // Add one configuration (of the grid's dimension).  With `subtract_shear_profile`, each
+  // particle's velocity is taken relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of
+  // `frame` before it is summed.
   void add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile);
   void save(StateArchive& archive, const std::string& prefix) const;
   void restore(const StateArchive& archive, const std::string& prefix);
+
+  // Σ m v_a, Σ m v_a v_b (either order) and Σ m|v|² v_a by axis (0 = x, 1 = y, 2 = z).
+  std::vector<double>& momentum(int a) { return a == 0 ? px : (a == 1 ? py : pz); }
+  const std::vector<double>& momentum(int a) const { return const_cast<CellMoments&>(*this).momentum(a); }
+  std::vector<double>& second_moment(int a, int b);
+  const std::vector<double>& second_moment(int a, int b) const { return const_cast<CellMoments&>(*this).second_moment(a, b); }
+  std::vector<double>& energy_flux(int a) { return a == 0 ? energy_flux_x : (a == 1 ? energy_flux_y : energy_flux_z); }
+  const std::vector<double>& energy_flux(int a) const { return const_cast<CellMoments&>(*this).energy_flux(a); }
 };
 
 struct CellFields {
   FieldGrid grid;
   std::vector<double> count;        // particles per cell (per configuration)
-  std::vector<double> density;      // ρ = count / cell area
+  std::vector<double> density;      // ρ = count / cell area (2D) or volume (3D)
   std::vector<double> velocity_x;   // V(r); 0 in empty cells
   std::vector<double> velocity_y;
-  std::vector<double> temperature;  // T(r) = ½⟨(v − V)²⟩ (1.3); 0 in empty cells
-  std::vector<double> kinetic_xx;   // τ^(k) = ρ⟨v'v'⟩ (1.4)
+  std::vector<double> temperature;  // T(r) = Σ m|v − V|² / (d · count) (1.3); 0 in empty cells
+  std::vector<double> kinetic_xx;   // τ^(k) = Σ m v'v' / cell (1.4); ρ⟨v'v'⟩ for unit masses
   std::vector<double> kinetic_xy;
   std::vector<double> kinetic_yy;
-  std::vector<double> pressure_kinetic;  // ½ Tr τ^(k) = ρ T
-  std::vector<double> vorticity;    // ω = ∂V_y/∂x − ∂V_x/∂y, central differences across cells
-  std::vector<double> heat_flux_kinetic_x;  // q^(k) = ρ⟨½|v'|² v'⟩, v' = v − V(r); 0 in empty cells
+  std::vector<double> pressure_kinetic;  // Tr τ^(k) / d = ρ T
+  std::vector<double> vorticity;    // ω_z = ∂V_y/∂x − ∂V_x/∂y, central differences across cells (each layer in 3D)
+  std::vector<double> heat_flux_kinetic_x;  // q^(k) = Σ ½ m|v'|² v' / cell, v' = v − V(r); 0 in empty cells
   std::vector<double> heat_flux_kinetic_y;
+  std::vector<double> velocity_z, kinetic_xz, kinetic_yz, kinetic_zz, heat_flux_kinetic_z;  // 3D only
+
+  std::vector<double>& velocity(int a) { return a == 0 ? velocity_x : (a == 1 ? velocity_y : velocity_z); }
+  std::vector<double>& kinetic(int a, int b);
+  std::vector<double>& heat_flux_kinetic(int a) {
+    return a == 0 ? heat_flux_kinetic_x : (a == 1 ? heat_flux_kinetic_y : heat_flux_kinetic_z);
+  }
 };
 
 // `frame` and `shear_offset` (the Lees–Edwards image offset Δ) give the neighbours of the top and
@@ -59,7 +81,8 @@ CellFields fields_from_moments(const CellMoments& moments, const ShearFrame& fra
 
 namespace granule {
 
-// The named per-cell fields, in one list for writers and readers.
+// The named per-cell fields, in one list for writers and readers: the 2D set, then in 3D the z
+// components.
 template <typename Fields, typename Visit>
 void for_each_field(Fields& f, Visit&& visit) {
   visit("count", f.count);
@@ -74,16 +97,22 @@ void for_each_field(Fields& f, Visit&& visit) {
   visit("vorticity", f.vorticity);
   visit("heat_flux_kinetic_x", f.heat_flux_kinetic_x);
   visit("heat_flux_kinetic_y", f.heat_flux_kinetic_y);
+  if (f.grid.dimension != 3) return;
+  visit("velocity_z", f.velocity_z);
+  visit("kinetic_xz", f.kinetic_xz);
+  visit("kinetic_yz", f.kinetic_yz);
+  visit("kinetic_zz", f.kinetic_zz);
+  visit("heat_flux_kinetic_z", f.heat_flux_kinetic_z);
 }
 
-// Streamwise averages over each row of cells (Figs 3.15–3.16): ρ(y) the row mean of ρ, the
-// mass-weighted row means V_x(y), V_y(y), T(y) = Σ ρ T / Σ ρ, and the row means of the kinetic heat
-// flux (a flux per unit area, like ρ: each cell's own q^(k), about its own V(r)).
+// Streamwise averages over each row of cells (Figs 3.15–3.16; in 3D over x and z): ρ(y) the row
+// mean of ρ, the mass-weighted row means V_x(y), V_y(y), T(y) = Σ ρ T / Σ ρ, and the row means of
+// the kinetic heat flux (a flux per unit area, like ρ: each cell's own q^(k), about its own V(r)).
 struct StreamwiseProfiles {
   std::vector<double> y, density, velocity_x, velocity_y, temperature, heat_flux_kinetic_x, heat_flux_kinetic_y;
 };
 StreamwiseProfiles streamwise_profiles(const CellFields& fields);
-// The mean over each row of cells of a per-cell field (index iy).
+// The mean over each row of cells (all ix, and all iz in 3D) of a per-cell field (index iy).
 std::vector<double> row_means(const FieldGrid& grid, const std::vector<double>& field);
 
 }  // namespace granule

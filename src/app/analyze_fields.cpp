@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -47,14 +48,19 @@ int analyze_fields(const FieldsOptions& o) {
                        "(negative indices count from the end)\n", o.first, o.last, head.frames - 1);
     return kExitBadInput;
   }
-  FieldGrid grid = default_field_grid(s.length_x, s.length_y, s.particles);
+  const bool three_dimensional = s.dimension == 3;
+  FieldGrid grid = three_dimensional ? default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles)
+                                     : default_field_grid(s.length_x, s.length_y, s.particles);
   if (!o.cells.empty()) {
-    if (o.cells.size() != 2 || o.cells[0] < 1 || o.cells[1] < 1 || o.cells[0] > (1 << 14) || o.cells[1] > (1 << 14)) {
-      fmt::print(stderr, "granule analyze fields: error: --cells expects nx,ny with integers in [1, 16384]\n");
+    const std::size_t axes = three_dimensional ? 3 : 2;
+    if (o.cells.size() != axes || std::any_of(o.cells.begin(), o.cells.end(), [](int n) { return n < 1 || n > (1 << 14); })) {
+      fmt::print(stderr, "granule analyze fields: error: --cells expects {} with integers in [1, 16384]\n",
+                 three_dimensional ? "nx,ny,nz" : "nx,ny");
       return kExitBadInput;
     }
     grid.nx = o.cells[0];
     grid.ny = o.cells[1];
+    if (three_dimensional) grid.nz = o.cells[2];
   }
   const ShearFrame frame{s.length_x, s.length_y, s.shear_velocity};
   FieldsWriter writer(o.out, grid, FieldsMetadata{s, head.metadata.boundary, o.subtract_shear, o.snapshots, kVersion}, false);
@@ -76,12 +82,15 @@ int analyze_fields(const FieldsOptions& o) {
     out.t_start = t_start;
     out.c_start = c_start;
     out.configurations = running.configurations;
+    out.shear_offset = f.shear_offset;
+    out.shear_velocity = head.metadata.boundary == "lees-edwards" ? f.shear_velocity : 0.0;
     out.instant = fields_from_moments(instant, frame, f.shear_offset, o.subtract_shear);
     out.average = fields_from_moments(running, frame, f.shear_offset, o.subtract_shear);
     writer.append(out);
   }
   writer.finish();
-  fmt::print("fields of frames {}..{} on {} × {} cells written to {}\n", first, last, grid.nx, grid.ny, o.out);
+  fmt::print("fields of frames {}..{} on {} × {}{} cells written to {}\n", first, last, grid.nx, grid.ny,
+             three_dimensional ? fmt::format(" × {}", grid.nz) : "", o.out);
   return 0;
 }
 
@@ -93,7 +102,7 @@ void add_analyze_fields(CLI::App& analyze) {
       "fields", "Coarse-grained density, velocity, temperature, kinetic stress and vorticity (thesis §1.4.3) of saved "
                 "snapshots, per frame and averaged over the frames (schema: README, fields.h5)");
   command->add_option("snapshots", o->snapshots, "snapshots.h5 of a run")->required()->check(CLI::ExistingFile);
-  command->add_option("--cells", o->cells, "Coarse-graining cells nx,ny (default: about 20 disks per cell)")->delimiter(',');
+  command->add_option("--cells", o->cells, "Coarse-graining cells nx,ny (3D: nx,ny,nz; default: about 20 particles per cell)")->delimiter(',');
   command->add_option("--first", o->first, "First frame (negative counts from the end)")->default_val(0);
   command->add_option("--last", o->last, "Last frame (negative counts from the end)")->default_val(-1);
   command->add_flag("--subtract-shear", o->subtract_shear,

@@ -1,6 +1,7 @@
 // `granule plot export`: particles as extended XYZ (OVITO) or VTK PolyData (ParaView), and
 // coarse-grained fields as VTK ImageData, one frame or all frames (multi-frame XYZ, .pvd series).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <memory>
@@ -73,7 +74,7 @@ void export_particles(const ExportArguments& a, const std::string& snapshots) {
       const SystemParams& p = s.metadata.system;
       write_xyz_frame(file.stream(), s.frame.particles,
                       {p.diameter, p.length_x, p.length_y, s.frame.clock.time, s.frame.collisions_per_particle,
-                       s.metadata.boundary, p.shear_velocity, s.frame.shear_offset});
+                       s.metadata.boundary, p.shear_velocity, s.frame.shear_offset, p.length_z});
     }
     file.commit();
     fmt::print("wrote {} ({} frames)\n", out.string(), frames.size());
@@ -86,6 +87,19 @@ void export_particles(const ExportArguments& a, const std::string& snapshots) {
   });
 }
 
+// The grid of fields computed from snapshots: --cells NX NY (NZ in 3D), or ~40 disks a cell in 2D
+// (as the pictures) and ~20 spheres a cell in 3D.
+FieldGrid snapshot_field_grid(const SystemParams& p, const std::vector<int>& cells) {
+  if (p.dimension == 3) {
+    if (cells.empty()) return default_field_grid_3d(p.length_x, p.length_y, p.length_z, p.particles);
+    if (cells.size() != 3) throw BadPlotInput("--cells of a 3D run needs three integers NX NY NZ");
+    return {cells[0], cells[1], p.length_x, p.length_y, cells[2], p.length_z, 3};
+  }
+  if (cells.size() == 3) throw BadPlotInput("--cells of a 2D run needs two integers NX NY");
+  return cells.empty() ? render::automatic_picture_grid(p.particles, p.length_x, p.length_y)
+                       : FieldGrid{cells[0], cells[1], p.length_x, p.length_y};
+}
+
 // Instantaneous cell fields of §1.4.3 computed from the snapshots themselves.
 void export_snapshot_fields(const ExportArguments& a, const std::string& snapshots, const fs::path& out,
                             const std::vector<std::int64_t>& frames) {
@@ -93,14 +107,17 @@ void export_snapshot_fields(const ExportArguments& a, const std::string& snapsho
     const SnapshotRead s = read_snapshot(snapshots, k);
     const SystemParams& p = s.metadata.system;
     const ShearFrame box{p.length_x, p.length_y, s.metadata.boundary == "lees-edwards" ? p.shear_velocity : 0.0};
-    FieldGrid grid = render::automatic_picture_grid(p.particles, p.length_x, p.length_y);
-    if (!a.cells.empty()) grid = {a.cells[0], a.cells[1], p.length_x, p.length_y};
+    const FieldGrid grid = snapshot_field_grid(p, a.cells);
     CellMoments moments(grid);
     moments.add(s.frame.particles, box, a.relative);
     const CellFields fields = fields_from_moments(moments, box, s.frame.shear_offset, a.relative);
     std::vector<NamedCellArray> arrays;
-    for (const std::string& name : render::cell_field_names()) {
-      arrays.push_back({"instant_" + name, *render::cell_field_by_name(fields, name)});
+    if (grid.dimension == 3) {  // every field, named as in fields.h5
+      for_each_field(fields, [&](const char* name, const std::vector<double>& v) { arrays.push_back({std::string("instant_") + name, v}); });
+    } else {
+      for (const std::string& name : render::cell_field_names()) {
+        arrays.push_back({"instant_" + name, *render::cell_field_by_name(fields, name)});
+      }
     }
     write_vti_fields(path, grid, arrays, s.frame.clock.time);
     return s.frame.clock.time;
@@ -133,8 +150,8 @@ int plot_export(const ExportArguments& a) {
   if (a.what != "particles" && a.what != "fields") {
     throw BadPlotInput(fmt::format("--what {} is not one of particles, fields", a.what));
   }
-  if (!a.cells.empty() && (a.cells[0] < 1 || a.cells[1] < 1 || a.cells[0] > 4096 || a.cells[1] > 4096)) {
-    throw BadPlotInput(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
+  for (int n : a.cells) {
+    if (n < 1 || n > 4096) throw BadPlotInput(fmt::format("--cells {} must be integers in [1, 4096]", fmt::join(a.cells, " ")));
   }
   if (a.what == "fields") {
     export_fields(a);
@@ -157,8 +174,9 @@ void add_plot_export_command(CLI::App& plot) {
   c->add_option("--frame", a->frame, "Frame index (negative counts from the end)")->capture_default_str();
   c->add_flag("--all-frames", a->all_frames, "Every frame: one multi-frame .xyz, or one VTK file per frame and a .pvd series");
   c->add_option("--out", a->out, "Output file (default: particles_<k>.xyz/.vtp, particles.xyz/.pvd, fields_<k>.vti or fields.pvd beside the input)");
-  c->add_option("--cells", a->cells, "Coarse-graining grid NX NY of fields computed from snapshots (default: ~40 disks a cell)")
-      ->expected(2);
+  c->add_option("--cells", a->cells,
+                "Coarse-graining grid NX NY (3D: NX NY NZ) of fields computed from snapshots (default: ~40 disks, ~20 spheres a cell)")
+      ->expected(2, 3);
   c->add_flag("--relative", a->relative, "Lees–Edwards fields from snapshots: velocities relative to the mean shear flow");
   c->callback([a] { finish_plot_command("export", [&] { return plot_export(*a); }); });
 }

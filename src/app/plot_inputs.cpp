@@ -53,6 +53,25 @@ std::string hdf5_format(const std::string& path) {
   }
 }
 
+std::vector<std::string> given_options(const CLI::App& command) {
+  std::vector<std::string> given;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() > 0) given.push_back(option->get_name());
+  }
+  return given;
+}
+
+int hdf5_dimension(const std::string& path) {
+  try {
+    h5::Handle file = h5::open_file(path);
+    const int dimension = H5Aexists(file.get(), "dimension") > 0 ? h5::read_attribute<int>(file.get(), "dimension", H5T_NATIVE_INT) : 2;
+    file.close();
+    return dimension;
+  } catch (const IoError& error) {
+    throw BadPlotInput(fmt::format("cannot read {} as HDF5: {}", path, error.what()));
+  }
+}
+
 void require_hdf5_format(const std::string& path, const char* format, const char* producer) {
   if (hdf5_format(path) != format) throw BadPlotInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
 }

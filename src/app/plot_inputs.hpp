@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace granule::app {
 
 // Bad input (exit code 2, nothing written): the message names the option and the allowed range.
@@ -27,12 +31,19 @@ std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames);
 
 // The root attribute `format` of an HDF5 file ("" without one); throws BadPlotInput when `path` is not HDF5.
 std::string hdf5_format(const std::string& path);
+// The root attribute `dimension` of a snapshot or fields file: 3 for a run of spheres, 2 (also when
+// absent, as in files written before 3D existed) for disks.  Throws BadPlotInput when `path` is not HDF5.
+int hdf5_dimension(const std::string& path);
 // Throws BadPlotInput unless `path` is an HDF5 file whose root attribute `format` is `format`.
 void require_hdf5_format(const std::string& path, const char* format, const char* producer);
 
 // The one-dimensional per-frame dataset `name` of an HDF5 file of frames (e.g. `shear_velocity` of
 // snapshots.h5) over its complete frames; empty when the file has no such dataset.
 std::vector<double> read_frame_series(const std::string& path, const char* name);
+
+// The options given on a parsed command line ("--width", ...): options that apply to one
+// dimension only are refused for the other.
+std::vector<std::string> given_options(const CLI::App& command);
 
 // Runs a program (argv[0] is looked up in PATH) and returns its exit code (127 if it cannot start).
 int run_program(const std::vector<std::string>& argv);

@@ -1,8 +1,11 @@
 // `granule plot fields | timeseries | profiles | phase | collisions | spectra | f1`: line plots and shaded
-// maps drawn by the matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3).
+// maps drawn by the matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3);
+// `fields` of a 3D run draws density isosurfaces instead (fields3d.py).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
+#include <utility>
 
 #include "app/plot_command.hpp"
 #include "app/plot_inputs.hpp"
@@ -22,7 +25,39 @@ struct ScriptArguments {
   std::int64_t max_points = 200000;
   std::string window;
   std::string data;
+  // `fields` of a 3D run only (density isosurfaces, fields3d.py); passed on as given.
+  std::string level, smooth, average_frames, color_by;
+  std::vector<std::string> view, size;
+  std::vector<std::string> given;  // the options given on the command line
 };
+
+constexpr const char* kIsosurfaceOptions[] = {"--level", "--smooth", "--average-frames", "--color-by", "--view", "--size"};
+
+bool was_given(const ScriptArguments& a, const char* option) {
+  return std::find(a.given.begin(), a.given.end(), option) != a.given.end();
+}
+
+// `granule plot fields` of a 3D fields.h5: the density isosurface coloured by V_x (Figs C.1–C.3).
+int plot_isosurface(const ScriptArguments& a, const std::string& input, const std::string& out) {
+  if (a.quantities.size() > 1) throw BadPlotInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
+  std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi),
+                                     "--group", a.group};
+  if (!a.quantities.empty()) arguments.insert(arguments.end(), {"--quantity", a.quantities[0]});
+  if (was_given(a, "--colormap")) arguments.insert(arguments.end(), {"--colormap", a.colormap});
+  const std::pair<const char*, const std::string*> single[] = {
+      {"--level", &a.level}, {"--smooth", &a.smooth}, {"--average-frames", &a.average_frames}, {"--color-by", &a.color_by}};
+  for (const auto& [option, value] : single) {
+    if (!value->empty()) arguments.insert(arguments.end(), {option, *value});
+  }
+  for (const auto& [option, values] : {std::pair{"--view", &a.view}, std::pair{"--size", &a.size}}) {
+    if (values->empty()) continue;
+    arguments.emplace_back(option);
+    arguments.insert(arguments.end(), values->begin(), values->end());
+  }
+  const int status = run_plot_script("fields3d", arguments);
+  if (status == 0) fmt::print("wrote {}\n", out);
+  return status;
+}
 
 // One matplotlib kind: its script, the run file it reads and its default output name.
 struct ScriptKind {
@@ -41,6 +76,12 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
   if (a.dpi < 20 || a.dpi > 600) throw BadPlotInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
   const std::string input = locate_run_file(a.input, kind.input_file);
   const std::string out = a.out.empty() ? output_beside(a.input, kind.output_file) : a.out;
+  if (std::string_view(kind.name) == "fields") {
+    if (hdf5_dimension(input) == 3) return plot_isosurface(a, input, out);
+    for (const char* option : kIsosurfaceOptions) {
+      if (was_given(a, option)) throw BadPlotInput(fmt::format("{} is for 3D runs only", option));
+    }
+  }
   std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi)};
   if (std::string_view(kind.name) == "fields") {
     arguments.insert(arguments.end(), {"--group", a.group, "--colormap", a.colormap});
@@ -60,7 +101,7 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
 constexpr ScriptKind kKinds[] = {
     {"fields", "fields", "fields.h5", "fields.png",
      "Shaded maps of density, temperature, kinetic and collisional pressure from fields.h5 "
-     "(thesis Figs 2.4, 2.12-2.18, 3.5-3.14)", true, false},
+     "(thesis Figs 2.4, 2.12-2.18, 3.5-3.14); a 3D run: density isosurfaces coloured by V_x (Figs C.1-C.3)", true, false},
     {"timeseries", "timeseries", "timeseries.csv", "timeseries.png",
      "Global diagnostics against c and t from timeseries.csv (thesis Figs 2.5-2.7, 3.6)", false, false},
     {"profiles", "profiles", "fields.h5", "profiles.png",
@@ -96,8 +137,14 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
       c->add_option("--group", a->group, "average (over the interval ending at the frame) or instant")->capture_default_str();
       c->add_option("--quantities", a->quantities,
                     "Maps to draw (default: density temperature pressure_kinetic pressure_collisional)");
-      c->add_option("--colormap", a->colormap, "matplotlib colormap (gray: lighter for higher, as the thesis)")
+      c->add_option("--colormap", a->colormap, "matplotlib colormap (gray: lighter for higher, as the thesis; 3D: coolwarm)")
           ->capture_default_str();
+      c->add_option("--level", a->level, "3D runs: the isosurface at this multiple of the field's mean (default 1.5)");
+      c->add_option("--smooth", a->smooth, "3D runs: Gaussian smoothing over this many cells, 0 … 16 (default 1)");
+      c->add_option("--average-frames", a->average_frames, "3D runs: average this many frames ending at --frame (default 1)");
+      c->add_option("--color-by", a->color_by, "3D runs: the field colouring the surface (default velocity_x)");
+      c->add_option("--view", a->view, "3D runs: elevation and azimuth in degrees (default 22 -58)")->expected(2);
+      c->add_option("--size", a->size, "3D runs: picture WIDTH HEIGHT in pixels (default 1000 800)")->expected(2);
     }
     if (std::string_view(kind.name) == "phase") {
       c->add_option("--max-points", a->max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
@@ -107,7 +154,10 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
       c->add_option("--window", a->window, kind.window_help)->capture_default_str();
     }
     if (kind.writes_data) c->add_option("--data", a->data, "Also write the numbers drawn to this JSON file");
-    c->callback([a, &kind] { finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); }); });
+    c->callback([a, &kind, c] {
+      a->given = given_options(*c);
+      finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); });
+    });
   }
 }
 

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/plot_command.hpp"
+#include "app/plot_config3d.hpp"
 #include "app/plot_inputs.hpp"
 #include "app/plot_run_picture.hpp"
 #include "io/atomic_file.hpp"
@@ -29,7 +30,37 @@ struct PictureArguments {
   bool relative = false;
   bool no_legend = false;
   double min_radius = 0.6;
+  std::vector<double> view;  // 3D only: elevation, azimuth
+  bool perspective = false;  // 3D only
+  std::vector<std::string> given;  // the options given on the command line
 };
+
+// Options that exist for one dimension only, refused for the other.
+constexpr const char* kOptions2dOnly[] = {"--field", "--cells", "--no-arrows", "--relative", "--min-radius"};
+constexpr const char* kOptions3dOnly[] = {"--view", "--perspective"};
+
+template <std::size_t N>
+void refuse_given(const PictureArguments& a, const char* const (&options)[N], const char* which) {
+  for (const char* option : options) {
+    if (std::find(a.given.begin(), a.given.end(), option) != a.given.end()) {
+      throw BadPlotInput(fmt::format("{} is for {} runs only", option, which));
+    }
+  }
+}
+
+// The sphere picture of a 3D run (config3d.py): --color direction (the 2D default) becomes auto.
+int plot_config_3d(const PictureArguments& a, const std::string& snapshots) {
+  refuse_given(a, kOptions2dOnly, "2D");
+  const bool color_given = std::find(a.given.begin(), a.given.end(), "--color") != a.given.end();
+  if (color_given && (a.color == "direction" || a.color == "field")) {
+    throw BadPlotInput(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
+  }
+  const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
+  const int status = draw_config_3d({snapshots, out, a.frame, a.width, color_given ? a.color : "auto", a.view, a.perspective,
+                                     !a.no_legend});
+  if (status == 0) fmt::print("wrote {}\n", out);
+  return status;
+}
 
 void add_picture_options(CLI::App* command, PictureArguments& a) {
   command->add_option("input", a.input, "Run directory or snapshot file (snapshots.h5)")->required();
@@ -78,9 +109,11 @@ render::PictureOptions picture_options(const PictureArguments& a) {
 }
 
 int plot_config(const PictureArguments& a) {
-  const render::PictureOptions options = picture_options(a);
   const std::string snapshots = locate_run_file(a.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
+  if (hdf5_dimension(snapshots) == 3) return plot_config_3d(a, snapshots);
+  refuse_given(a, kOptions3dOnly, "3D");
+  const render::PictureOptions options = picture_options(a);
   const std::int64_t frame = resolve_frame(a.frame, read_snapshot(snapshots, 0).frames);
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
   render::write_png(render_snapshot_picture(read_snapshot(snapshots, frame), options), out);
@@ -108,6 +141,8 @@ int plot_movie(const MovieArguments& m) {
   if (m.stride < 1) throw BadPlotInput(fmt::format("--stride {} must be at least 1", m.stride));
   const std::string snapshots = locate_run_file(m.picture.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
+  if (hdf5_dimension(snapshots) == 3) throw BadPlotInput("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
+  refuse_given(m.picture, kOptions3dOnly, "3D");
   const std::int64_t frames = read_snapshot(snapshots, 0).frames;
   const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
   // Without the encoder the movie cannot be written: say so before drawing anything.
@@ -150,11 +185,17 @@ void add_plot_picture_commands(CLI::App& plot) {
   auto config = std::make_shared<PictureArguments>();
   CLI::App* c = plot.add_subcommand(
       "config", "Particle configuration, disks to scale, coloured by velocity direction, speed or a cell field, with the "
-                "coarse-grained velocity field as arrows (thesis Figs 2.2, 2.3, 3.4, 3.10)");
+                "coarse-grained velocity field as arrows (thesis Figs 2.2, 2.3, 3.4, 3.10); a 3D run: spheres as shaded "
+                "disks coloured by v_x or the speed (Appendix C)");
   add_picture_options(c, *config);
   c->add_option("--frame", config->frame, "Snapshot index (negative counts from the end)")->capture_default_str();
   c->add_option("--out", config->out, "PNG file (default: configuration.png beside the input)");
-  c->callback([config] { finish_plot_command("config", [&] { return plot_config(*config); }); });
+  c->add_option("--view", config->view, "3D runs: elevation and azimuth of the view in degrees (default 22 -58)")->expected(2);
+  c->add_flag("--perspective", config->perspective, "3D runs: perspective instead of orthographic projection");
+  c->callback([config, c] {
+    config->given = given_options(*c);
+    finish_plot_command("config", [&] { return plot_config(*config); });
+  });
 
   auto movie = std::make_shared<MovieArguments>();
   movie->picture.width = 800;
@@ -165,7 +206,10 @@ void add_plot_picture_commands(CLI::App& plot) {
   m->add_option("--stride", movie->stride, "Draw every S-th snapshot (0, S, 2S, …)")->capture_default_str();
   m->add_flag("--no-caption", movie->no_caption, "Do not print t, c (and U) in the top-left corner of each frame");
   m->add_option("--out", movie->picture.out, "mp4 file (default: movie.mp4 beside the input)");
-  m->callback([movie] { finish_plot_command("movie", [&] { return plot_movie(*movie); }); });
+  m->callback([movie, m] {
+    movie->picture.given = given_options(*m);
+    finish_plot_command("movie", [&] { return plot_movie(*movie); });
+  });
 }
 
 }  // namespace granule::app

@@ -71,8 +71,9 @@ SpacetimeProfiles spacetime_from_snapshots(const std::string& snapshots_path, in
   out.restitution = m.system.restitution;
   out.nominal_shear_velocity = m.system.shear_velocity;
   out.boundary = m.boundary;
-  // One cell per row, the full width of the box: the cell fields of §1.4.3 are then the rows' own.
-  const FieldGrid grid{1, rows, m.system.length_x, m.system.length_y};
+  // One cell per row, the full width (and depth, in 3D) of the box: the cell fields of §1.4.3 are
+  // then the rows' own.
+  const FieldGrid grid{1, rows, m.system.length_x, m.system.length_y, 1, m.system.length_z, m.system.dimension};
   for (std::int64_t k = 0; k < first.frames; ++k) {
     const SnapshotRead s = k == 0 ? first : read_snapshot(snapshots_path, k);  // frame 0 is read once
     const double shear_velocity = m.boundary != "lees-edwards" ? 0.0

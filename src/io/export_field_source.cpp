@@ -11,7 +11,7 @@ namespace {
 
 using h5::Handle;
 
-// The (K, ny, nx) maps of one group, frame k.
+// The (K, ny, nx) maps (3D: (K, nz, ny, nx)) of one group, frame k.
 void read_group_maps(hid_t file, const std::string& group_name, const FieldGrid& grid, hsize_t k,
                      std::vector<NamedCellArray>& arrays) {
   if (H5Lexists(file, group_name.c_str(), H5P_DEFAULT) <= 0) return;
@@ -24,8 +24,9 @@ void read_group_maps(hid_t file, const std::string& group_name, const FieldGrid&
     std::string name(static_cast<std::size_t>(length), '\0');
     H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT);
     const std::string path = group_name + "/" + name;
-    const std::vector<hsize_t> dims = h5::dataset_shape(file, path.c_str());
-    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(grid.ny) || dims[2] != static_cast<hsize_t>(grid.nx)) continue;
+    std::vector<hsize_t> map = h5::dataset_shape(file, path.c_str());
+    if (!map.empty()) map.erase(map.begin());  // the frames axis
+    if (map != field_map_shape(grid)) continue;
     NamedCellArray array{group_name + "_" + name, std::vector<double>(grid.cells())};
     h5::read_frame(file, path.c_str(), H5T_NATIVE_DOUBLE, array.values.data(), k);
     arrays.push_back(std::move(array));

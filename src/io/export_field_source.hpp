@@ -1,5 +1,6 @@
-// Reads one frame of a fields file (fields.h5: root attributes nx, ny, length_x, length_y;
-// /frames/t, /frames/c (K,); groups /instant and /average of (K, ny, nx) maps) for export.
+// Reads one frame of a fields file (fields.h5: root attributes nx, ny, length_x, length_y (3D: also
+// nz, length_z); /frames/t, /frames/c (K,); groups /instant and /average of (K, ny, nx) maps, 3D
+// (K, nz, ny, nx)) for export.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +17,7 @@ struct FieldFileFrame {
   std::int64_t frames = 0;  // K, frames in the file
   double time = 0.0;
   double collisions_per_particle = 0.0;
-  // Every (K, ny, nx) map of /instant and /average, named "instant_<name>" / "average_<name>".
+  // Every map of /instant and /average, named "instant_<name>" / "average_<name>".
   std::vector<NamedCellArray> arrays;
 };
 

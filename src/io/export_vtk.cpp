@@ -49,12 +49,13 @@ std::vector<char> bytes_of(const std::vector<T>& values) {
   return bytes;
 }
 
-// (a, b, 0) triples of two arrays.
-std::vector<double> planar_vectors(const std::vector<double>& a, const std::vector<double>& b) {
+// (a, b, c) triples of three arrays; c = 0 when `c` is empty (2D).
+std::vector<double> triples(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
   std::vector<double> out(3 * a.size(), 0.0);
   for (std::size_t i = 0; i < a.size(); ++i) {
     out[3 * i] = a[i];
     out[3 * i + 1] = b[i];
+    if (!c.empty()) out[3 * i + 2] = c[i];
   }
   return out;
 }
@@ -75,10 +76,12 @@ void write_vtp_particles(const std::string& path, const ParticleState& p, double
   std::string xml = fmt::format(fmt::runtime(kHeader), "PolyData") + "<PolyData>\n" + time_field(time);
   xml += fmt::format("<Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
                      "NumberOfPolys=\"0\">\n<PointData Vectors=\"velocity\" Scalars=\"radius\">\n", n);
-  xml += data.add("type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\"", bytes_of(planar_vectors(p.vx, p.vy)));
-  xml += data.add("type=\"Float64\" Name=\"radius\"", bytes_of(std::vector<double>(n, 0.5 * diameter)));
+  xml += data.add("type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\"", bytes_of(triples(p.vx, p.vy, p.vz)));
+  std::vector<double> radius(n);
+  for (std::size_t i = 0; i < n; ++i) radius[i] = 0.5 * p.diameter_of(i, diameter);
+  xml += data.add("type=\"Float64\" Name=\"radius\"", bytes_of(radius));
   xml += "</PointData>\n<Points>\n";
-  xml += data.add("type=\"Float64\" Name=\"position\" NumberOfComponents=\"3\"", bytes_of(planar_vectors(p.x, p.y)));
+  xml += data.add("type=\"Float64\" Name=\"position\" NumberOfComponents=\"3\"", bytes_of(triples(p.x, p.y, p.z)));
   xml += "</Points>\n<Verts>\n";
   std::vector<std::int64_t> connectivity(n), offsets(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -96,10 +99,12 @@ void write_vtp_particles(const std::string& path, const ParticleState& p, double
 
 void write_vti_fields(const std::string& path, const FieldGrid& grid, const std::vector<NamedCellArray>& arrays, double time) {
   AppendedArrays data;
-  const std::string extent = fmt::format("0 {} 0 {} 0 0", grid.nx, grid.ny);
+  // A 2D grid is one layer of cells of unit depth; a 3D grid has nz layers of its cell depth.
+  const bool three_dimensional = grid.dimension == 3;
+  const std::string extent = fmt::format("0 {} 0 {} 0 {}", grid.nx, grid.ny, three_dimensional ? grid.nz : 0);
   std::string xml = fmt::format(fmt::runtime(kHeader), "ImageData");
-  xml += fmt::format("<ImageData WholeExtent=\"{}\" Origin=\"0 0 0\" Spacing=\"{} {} 1\">\n", extent, grid.cell_width(),
-                     grid.cell_height());
+  xml += fmt::format("<ImageData WholeExtent=\"{}\" Origin=\"0 0 0\" Spacing=\"{} {} {}\">\n", extent, grid.cell_width(),
+                     grid.cell_height(), three_dimensional ? grid.cell_depth() : 1.0);
   xml += time_field(time) + fmt::format("<Piece Extent=\"{}\">\n<CellData>\n", extent);
   for (const NamedCellArray& array : arrays) {
     if (array.values.size() != grid.cells()) throw std::invalid_argument("cell array " + array.name + " has the wrong size");

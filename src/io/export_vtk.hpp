@@ -1,6 +1,6 @@
 // VTK XML files for ParaView: particles as PolyData (.vtp: points with velocity and radius, one
 // vertex cell each), coarse-grained fields as ImageData (.vti: one value per coarse-graining cell,
-// CellData, x fastest as in FieldGrid), and a collection (.pvd) that makes a time series of either.
+// CellData, x fastest as in FieldGrid, in 2D or 3D), and a collection (.pvd) that makes a time series of either.
 // Arrays are Float64, appended raw little-endian with UInt64 block sizes.
 #pragma once
 
@@ -13,15 +13,17 @@
 
 namespace granule {
 
-// Positions (x, y, 0), "velocity" (v_x, v_y, 0) and "radius" σ/2; the frame's time as TimeValue.
+// Positions (x, y, z), "velocity" (v_x, v_y, v_z) (z = 0 in 2D) and "radius" σ/2 of each particle
+// (its own diameter when polydisperse, else `diameter`); the frame's time as TimeValue.
 void write_vtp_particles(const std::string& path, const ParticleState& particles, double diameter, double time);
 
 struct NamedCellArray {
   std::string name;
-  std::vector<double> values;  // grid.cells() values, cell ix + iy·nx
+  std::vector<double> values;  // grid.cells() values, cell ix + nx·(iy + ny·iz)
 };
 
-// An nx × ny image of cells spanning the box [0, L_x] × [0, L_y].
+// An nx × ny image of cells spanning the box [0, L_x] × [0, L_y] (3D: nx × ny × nz over
+// [0, L_x] × [0, L_y] × [0, L_z]).
 void write_vti_fields(const std::string& path, const FieldGrid& grid, const std::vector<NamedCellArray>& arrays, double time);
 
 // A ParaView collection: (time, file name relative to the .pvd) per frame.

@@ -1,9 +1,12 @@
 // Extended XYZ frames for OVITO (and ASE): one block per frame,
 //   N
-//   Lattice="L_x 0 0 0 L_y 0 0 0 1" Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 Time=t ...
+//   Lattice="L_x 0 0 0 L_y 0 0 0 1" Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1 Time=t ... pbc="T T F"
 //   D x y 0 v_x v_y 0 σ/2
-// The comment line also records c (collisions_per_particle), the boundary and, for Lees–Edwards,
-// the image offset Δ (shear_offset) and U (shear_velocity): OVITO's box is plainly periodic.
+// and in 3D Lattice="L_x 0 0 0 L_y 0 0 0 L_z", pbc="T T T", rows "D x y z v_x v_y v_z σ/2".  The
+// radius is each particle's own σ/2 when polydisperse (the `radius` column, which OVITO reads as its
+// Radius property).  The comment line also records c (collisions_per_particle), the boundary and,
+// for Lees–Edwards, the image offset Δ (shear_offset, along x between the images above and below in
+// y) and U (shear_velocity): OVITO's box is plainly periodic.
 #pragma once
 
 #include <ostream>
@@ -14,7 +17,7 @@
 namespace granule {
 
 struct XyzFrameInfo {
-  double diameter = 0.0;
+  double diameter = 0.0;  // σ of a monodisperse configuration
   double length_x = 1.0;
   double length_y = 1.0;
   double time = 0.0;
@@ -22,6 +25,7 @@ struct XyzFrameInfo {
   std::string boundary = "periodic";
   double shear_velocity = 0.0;
   double shear_offset = 0.0;
+  double length_z = 1.0;  // 3D only
 };
 
 // Appends one frame (full double precision) to `out`.

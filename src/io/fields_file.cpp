@@ -49,6 +49,13 @@ void for_each_scalar(Frame& f, Visit&& visit) {
   visit("/frames/c_start", f.c_start);
 }
 
+// The Lees–Edwards state of a frame (3D files only), in one list.
+template <typename Frame, typename Visit>
+void for_each_image_scalar(Frame& f, Visit&& visit) {
+  visit("/frames/shear_offset", f.shear_offset);
+  visit("/frames/shear_velocity", f.shear_velocity);
+}
+
 }  // namespace
 
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
@@ -60,6 +67,12 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   write_attribute(f, "ny", H5T_NATIVE_INT, &grid.ny);
   write_attribute(f, "length_x", H5T_NATIVE_DOUBLE, &grid.length_x);
   write_attribute(f, "length_y", H5T_NATIVE_DOUBLE, &grid.length_y);
+  if (grid.dimension == 3) {  // a 2D file has exactly the attributes it had before 3D existed
+    if (with_collisional) throw std::invalid_argument("the collisional stress is not yet written for 3D fields");
+    write_attribute(f, "dimension", H5T_NATIVE_INT, &grid.dimension);
+    write_attribute(f, "nz", H5T_NATIVE_INT, &grid.nz);
+    write_attribute(f, "length_z", H5T_NATIVE_DOUBLE, &grid.length_z);
+  }
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "restitution", H5T_NATIVE_DOUBLE, &m.system.restitution);
@@ -68,10 +81,12 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   write_attribute(f, "subtract_shear_profile", H5T_NATIVE_INT, &subtract);
   for (const char* group : {"/frames", "/instant", "/average", "/profiles"}) Handle(create_group(f, group), H5Gclose).close();
 
-  const std::vector<hsize_t> cells{static_cast<hsize_t>(grid.ny), static_cast<hsize_t>(grid.nx)};
+  const std::vector<hsize_t> cells = field_map_shape(grid);
   const std::vector<hsize_t> rows{static_cast<hsize_t>(grid.ny)};
   FieldsFrame shape;
+  shape.instant.grid = grid;
   for_each_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
+  if (grid.dimension == 3) for_each_image_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
   add_frames(f, "/average/configurations", H5T_NATIVE_INT, {});
   for_each_field(shape.instant, [&](const char* name, std::vector<double>&) {
     add_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
@@ -101,7 +116,9 @@ FieldsWriter::FieldsWriter(const std::string& path, std::int64_t keep_frames)
 void FieldsWriter::append(const FieldsFrame& frame) {
   const hid_t f = file_.get();
   const auto at = static_cast<hsize_t>(file_.frames());
-  for_each_scalar(frame, [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); });
+  const auto append_scalar = [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); };
+  for_each_scalar(frame, append_scalar);
+  if (grid_.dimension == 3) for_each_image_scalar(frame, append_scalar);
   append_frame(f, "/average/configurations", H5T_NATIVE_INT, &frame.configurations, at);
   for_each_field(frame.instant, [&](const char* name, const std::vector<double>& v) {
     append_frame(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
@@ -150,7 +167,20 @@ FieldGrid read_fields_grid(hid_t file) {
   grid.ny = read_attribute<int>(file, "ny", H5T_NATIVE_INT);
   grid.length_x = read_attribute<double>(file, "length_x", H5T_NATIVE_DOUBLE);
   grid.length_y = read_attribute<double>(file, "length_y", H5T_NATIVE_DOUBLE);
+  const htri_t three_dimensional = H5Aexists(file, "dimension");
+  check(three_dimensional, file, "look for", "dimension");
+  if (three_dimensional > 0) {
+    grid.dimension = read_attribute<int>(file, "dimension", H5T_NATIVE_INT);
+    grid.nz = read_attribute<int>(file, "nz", H5T_NATIVE_INT);
+    grid.length_z = read_attribute<double>(file, "length_z", H5T_NATIVE_DOUBLE);
+  }
   return grid;
+}
+
+std::vector<hsize_t> field_map_shape(const FieldGrid& grid) {
+  std::vector<hsize_t> shape{static_cast<hsize_t>(grid.ny), static_cast<hsize_t>(grid.nx)};
+  if (grid.dimension == 3) shape.insert(shape.begin(), static_cast<hsize_t>(grid.nz));
+  return shape;
 }
 
 std::vector<double> read_fields_frame_c(const std::string& path) {

@@ -1,7 +1,7 @@
 // HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
 // instantaneous fields of the configuration, the fields averaged over the interval since the
 // previous frame (with the collisional stress (1.6) and heat flux when collisions were observed),
-// and the streamwise profiles.  Written to `<name>.partial`, renamed by finish(); every failure throws
+// and the streamwise profiles.  Maps are (K, ny, nx), in 3D (K, nz, ny, nx).  Written to `<name>.partial`, renamed by finish(); every failure throws
 // IoError and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
@@ -27,6 +27,10 @@ struct FieldsFrame {
   double t = 0.0, c = 0.0;              // time and collisions per particle of the frame
   double t_start = 0.0, c_start = 0.0;  // start of the averaging interval
   int configurations = 0;               // configurations in the interval average
+  // The Lees–Edwards image offset Δ and velocity U(t) at the frame (0 in a periodic box), which the
+  // pictures need to smooth across the images; written to 3D files only (/frames/shear_offset,
+  // /frames/shear_velocity), so a 2D file stays what it was.
+  double shear_offset = 0.0, shear_velocity = 0.0;
   CellFields instant;
   CellFields average;
   std::optional<CollisionalStress> collisional;  // only when collisions were observed
@@ -51,8 +55,11 @@ class FieldsWriter {
   bool with_collisional_ = false;
 };
 
-// The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y).
+// The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y; in
+// 3D also dimension = 3, nz, length_z).
 FieldGrid read_fields_grid(hid_t file);
+// The shape of one frame of a cell map: (ny, nx) in 2D, (nz, ny, nx) in 3D (x fastest).
+std::vector<hsize_t> field_map_shape(const FieldGrid& grid);
 // Collisions per particle of each complete frame of a fields file (published or partial).
 std::vector<double> read_fields_frame_c(const std::string& path);
 
