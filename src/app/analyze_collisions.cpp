@@ -46,6 +46,12 @@ int analyze_collisions(const CollisionsOptions& o) {
                o.run_dir, error.what());
     return kExitBadInput;
   }
+  if (system.dimension != 2) {
+    // The impact-parameter, free-path and collisional-stress observers are those of disks.
+    fmt::print(stderr, "granule analyze collisions: error: {} is a 3D run: collision statistics are measured in 2D runs only\n",
+               o.run_dir);
+    return kExitBadInput;
+  }
   if (snapshot.metadata.system.particles != system.particles || snapshot.metadata.system.diameter != system.diameter) {
     fmt::print(stderr, "granule analyze collisions: error: {}/snapshots.h5 does not match its config.toml\n", o.run_dir);
     return kExitBadInput;
@@ -59,12 +65,12 @@ int analyze_collisions(const CollisionsOptions& o) {
   Simulation<2> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
   const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
   std::filesystem::create_directories(out);
-  driver::RunMeasurements measurements(config, out);
+  driver::RunMeasurements<2> measurements(config, out);
   measurements.start(sim);
   const std::int64_t target =
       sim.collisions() + std::llround(o.collisions_per_particle * static_cast<double>(system.particles));
   while (true) {
-    const StopReason reason = driver::advance_to_next_stop(sim, {&measurements}, {target, driver::kInf});
+    const StopReason reason = driver::advance_to_next_stop<2>(sim, {&measurements}, {target, driver::kInf});
     if (sim.collisions() >= target || reason == StopReason::kNoEvents || reason == StopReason::kInelasticCollapse) break;
   }
   measurements.after_step(sim, true);

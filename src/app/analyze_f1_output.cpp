@@ -194,7 +194,7 @@ void write_hdf5(const std::string& path, const F1RunDescription& run, const std:
   write_int(file, "particles", m.system.particles);
   const double box[2] = {m.system.length_x, m.system.length_y};
   write_attribute(file, "box", H5T_NATIVE_DOUBLE, box, 2);
-  write_double(file, "area_fraction", m.area_fraction);
+  write_double(file, "area_fraction", m.packing_fraction);
   write_double(file, "restitution", m.system.restitution);
   write_string_attribute(file, "boundary", m.boundary);
   write_double(file, "shear_velocity", m.system.shear_velocity);

@@ -131,7 +131,7 @@ class SpectraFile {
     write_attribute(file_, "diameter", H5T_NATIVE_DOUBLE, &s.diameter);
     const double box[2] = {s.length_x, s.length_y};
     write_attribute(file_, "box", H5T_NATIVE_DOUBLE, box, 2);
-    write_attribute(file_, "area_fraction", H5T_NATIVE_DOUBLE, &metadata.area_fraction);
+    write_attribute(file_, "area_fraction", H5T_NATIVE_DOUBLE, &metadata.packing_fraction);
     write_attribute(file_, "restitution", H5T_NATIVE_DOUBLE, &s.restitution);
     write_string_attribute(file_, "boundary", metadata.boundary);
     write_attribute(file_, "shear_velocity", H5T_NATIVE_DOUBLE, &s.shear_velocity);

@@ -99,7 +99,7 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
   const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
   const FieldGrid cells = default_field_grid(p.length_x, p.length_y, p.particles);
-  GlobalDiagnostics diagnostics(p, cells.nx, cells.ny);
+  GlobalDiagnostics<2> diagnostics(p, cells.nx, cells.ny);
   CollisionalStressField stress(cells, p.diameter);
   LocalDensity density(cells);
   ImpactParameterStatistics impacts(p.diameter, 50, p.particles, {}, &density);

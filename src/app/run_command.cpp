@@ -61,13 +61,16 @@ RunConfig configuration(const RunOptions& options, bool resume, const std::strin
 
 CellGrid engine_grid(const RunConfig& config) {
   const SystemParams& s = config.system;
-  const CellGridChoice choice = choose_cell_grid(
-      {s.length_x, s.length_y, s.diameter, s.particles, config.lees_edwards, config.particles_per_cell, config.engine_cells});
+  CellGridRequest request{s.length_x, s.length_y, s.diameter, s.particles, config.lees_edwards, config.particles_per_cell,
+                          config.engine_cells};
+  request.dimension = s.dimension;
+  request.length_z = s.length_z;
+  const CellGridChoice choice = choose_cell_grid(request);
   if (!choice.grid) throw CommandFailure{kExitBadInput, choice.error};
   return *choice.grid;
 }
 
-// initial.from: frame K of another run, which must hold the same disks in the same box.
+// initial.from: frame K of another run, which must hold the same particles in the same box.
 ParticleState state_from_run(const RunConfig& config) {
   const InitialSource& from = *config.initial_from;
   const std::int64_t frame = from.frame.value_or(-1);
@@ -82,18 +85,27 @@ ParticleState state_from_run(const RunConfig& config) {
   }
   const SystemParams& theirs = read.metadata.system;
   const SystemParams& ours = config.system;
-  if (theirs.particles != ours.particles || theirs.diameter != ours.diameter || theirs.length_x != ours.length_x ||
-      theirs.length_y != ours.length_y) {
+  if (theirs.dimension != ours.dimension || theirs.particles != ours.particles || theirs.diameter != ours.diameter ||
+      theirs.length_x != ours.length_x || theirs.length_y != ours.length_y ||
+      (ours.dimension == 3 && theirs.length_z != ours.length_z)) {
     throw CommandFailure{kExitBadInput,
-                         fmt::format("initial.from = \"{}\" holds N = {}, σ = {}, box [{}, {}]; this run has N = {}, "
-                                     "σ = {}, box [{}, {}]: system.* must match the run it starts from",
-                                     from.directory, theirs.particles, theirs.diameter, theirs.length_x, theirs.length_y,
-                                     ours.particles, ours.diameter, ours.length_x, ours.length_y)};
+                         fmt::format("initial.from = \"{}\" holds d = {}, N = {}, σ = {}, box [{}, {}, {}]; this run has "
+                                     "d = {}, N = {}, σ = {}, box [{}, {}, {}]: system.* must match the run it starts from",
+                                     from.directory, theirs.dimension, theirs.particles, theirs.diameter, theirs.length_x,
+                                     theirs.length_y, theirs.length_z, ours.dimension, ours.particles, ours.diameter,
+                                     ours.length_x, ours.length_y, ours.length_z)};
+  }
+  // The sizes and masses are those this configuration draws from its seed: the frame's must agree.
+  const ParticleSizes sizes = particle_sizes(config);
+  if (sizes.diameter != read.frame.particles.diameter || sizes.mass != read.frame.particles.mass) {
+    throw CommandFailure{kExitBadInput, fmt::format("initial.from = \"{}\" holds other particle diameters or masses than "
+                                                    "system.diameters / system.masses / seed give", from.directory)};
   }
   return read.frame.particles;
 }
 
-std::unique_ptr<RunSession> new_session(const RunConfig& config, const CellGrid& grid, const RunOptions& options) {
+template <int D>
+std::unique_ptr<RunSession<D>> new_session(const RunConfig& config, const CellGrid& grid, const RunOptions& options) {
   const std::string& out = options.out_dir;
   check_memory_for_run(config, grid);
   // Until production starts the images move at the velocity of the initial profile: U(0) of the
@@ -106,18 +118,21 @@ std::unique_ptr<RunSession> new_session(const RunConfig& config, const CellGrid&
     state = state_from_run(config);
   } else {
     InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
-                                                    config.placement, clock.held_shear_velocity);
+                                                    config.placement, clock.held_shear_velocity, particle_sizes(config));
     if (!initial.error.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("{} (system.area_fraction = {:.4g})", initial.error, config.packing_fraction)};
+      throw CommandFailure{kExitBadInput, fmt::format("{} (system.{} = {:.4g})", initial.error,
+                                                      config.system.dimension == 2 ? "area_fraction" : "packing_fraction",
+                                                      config.packing_fraction)};
     }
     state = std::move(initial.state);
   }
   prepare_new_output_directory(out, options.force);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  return std::make_unique<RunSession>(config, grid, out, state, clock);
+  return std::make_unique<RunSession<D>>(config, grid, out, state, clock);
 }
 
-std::unique_ptr<RunSession> resumed_session(const RunConfig& config, const CellGrid& grid, const std::string& out) {
+template <int D>
+std::unique_ptr<RunSession<D>> resumed_session(const RunConfig& config, const CellGrid& grid, const std::string& out) {
   StateArchive checkpoint;
   try {
     checkpoint = read_checkpoint(out + "/checkpoint.h5");
@@ -127,14 +142,14 @@ std::unique_ptr<RunSession> resumed_session(const RunConfig& config, const CellG
   check_memory_for_run(config, grid);
   auto session = [&] {
     try {
-      return std::make_unique<RunSession>(config, grid, out, checkpoint);
+      return std::make_unique<RunSession<D>>(config, grid, out, checkpoint);
     } catch (const std::runtime_error& error) {
       throw CommandFailure{kExitBadInput, fmt::format("cannot resume {}: {}", out, error.what())};
     }
   }();
   remove_end_of_run_outputs(out);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  const Simulation<2>& sim = session->simulation();
+  const Simulation<D>& sim = session->simulation();
   fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, sim.time(), sim.collisions_per_particle());
   return session;
 }
@@ -147,7 +162,8 @@ std::string existing_output(const std::string& out, const std::string& name) {
   return {};
 }
 
-std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const CellGrid& grid, const std::string& out,
+template <int D>
+std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const CellGrid& grid, const std::string& out,
                                                std::int64_t frame) {
   const std::string snapshots = existing_output(out, "snapshots.h5");
   SnapshotRead read;
@@ -157,14 +173,15 @@ std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const Ce
   } catch (const std::exception& error) {
     throw CommandFailure{kExitBadInput, fmt::format("--from-frame {}: cannot read {}: {}", frame, out, error.what())};
   }
-  if (read.metadata.system.particles != config.system.particles || read.metadata.system.diameter != config.system.diameter) {
+  if (read.metadata.system.particles != config.system.particles || read.metadata.system.diameter != config.system.diameter ||
+      read.metadata.system.dimension != config.system.dimension) {
     throw CommandFailure{kExitBadInput, fmt::format("{} does not match {}/config.toml", snapshots, out)};
   }
   const std::int64_t k = frame < 0 ? read.frames + frame : frame;
   check_memory_for_run(config, grid);
   // Everything the run wrote moves aside; frames and rows up to frame K come back.
   const std::string aside = set_aside_run_outputs(out, k);
-  RunSession::FrameStart start;
+  typename RunSession<D>::FrameStart start;
   start.frame = read.frame;
   start.snapshot_frames = k + 1;
   const std::string from_snapshots = existing_output(aside, "snapshots.h5");
@@ -184,7 +201,7 @@ std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const Ce
     std::filesystem::copy_file(fields, out + "/fields.h5.partial");
   }
   write_file_atomically(out + "/config.toml", to_toml(config));
-  auto session = std::make_unique<RunSession>(config, grid, out, start);
+  auto session = std::make_unique<RunSession<D>>(config, grid, out, start);
   fmt::print("continuing {} from frame {} (t = {:.6g}, c = {:.6g}); the later outputs are in {}\n", out, k,
              read.frame.clock.time, c, aside);
   return session;
@@ -192,48 +209,50 @@ std::unique_ptr<RunSession> from_frame_session(const RunConfig& config, const Ce
 
 void print_header(const RunConfig& config) {
   const SystemParams& s = config.system;
-  fmt::print("granule {}: N = {}, ν = {:.4g}, σ = {:.6g}, e = {}, {} box {} × {}{}\n", kVersion, s.particles,
-             config.packing_fraction, s.diameter, s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic", s.length_x,
-             s.length_y, config.lees_edwards ? fmt::format(", U = {}", s.shear_velocity) : std::string{});
+  fmt::print("granule {}: {}, N = {}, ν = {:.4g}, σ = {:.6g}{}, e = {}, {} box {} × {}{}{}\n", kVersion,
+             s.dimension == 3 ? "spheres" : "disks", s.particles, config.packing_fraction, s.diameter,
+             config.diameters.monodisperse() ? "" : " (largest)", s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic",
+             s.length_x, s.length_y, s.dimension == 3 ? fmt::format(" × {}", s.length_z) : std::string{},
+             config.lees_edwards ? fmt::format(", U = {}", s.shear_velocity) : std::string{});
   if (config.equilibrate > 0.0) fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
 }
 
 // The mean free time per disk over the last sampled interval (each collision involves two disks).
-double mean_free_time(const RunSession& session) {
-  const Simulation<2>& sim = session.simulation();
+template <int D>
+double mean_free_time(const RunSession<D>& session) {
+  const Simulation<D>& sim = session.simulation();
   for (auto it = session.samples().rbegin(); it != session.samples().rend(); ++it) {
     if (it->collision_rate > 0.0) return 0.5 / it->collision_rate;
   }
   return sim.collisions() > 0 ? 0.5 * sim.time() / sim.collisions_per_particle() : 0.0;
 }
 
-void report_collapse(const RunSession& session, const std::string& out) {
-  const Simulation<2>& sim = session.simulation();
+template <int D>
+void report_collapse(const RunSession<D>& session, const std::string& out) {
+  const Simulation<D>& sim = session.simulation();
   const CollapseReport& c = sim.collapse();
   const double free_time = mean_free_time(session);
   const std::int64_t frames = session.snapshot_frames();
   fmt::print(stderr,
-             "granule run: stopped by inelastic collapse at t = {:.9g} (c = {:.6g}): disks {} and {} near ({:.4g}, {:.4g})"
+             "granule run: stopped by inelastic collapse at t = {:.9g} (c = {:.6g}): particles {} and {} near ({:.4g}, {:.4g}, {:.4g})"
              " collided ever faster until the clock stopped advancing (McNamara & Young 1994).\n"
              "  The collapsing state is saved in {}/snapshots.h5 (frame {}).  The TC model (Luding & McNamara 1998) avoids\n"
              "  it; continue from an earlier frame with it switched on, e.g.\n"
              "    granule run --resume {} --from-frame {} --set system.tc_duration={:.3g}\n"
              "  (a t_c of 10⁻⁴ of the mean free time {:.3g} at the collapse leaves the physics unchanged).\n",
-             c.time, sim.collisions_per_particle(), c.first, c.second, c.position.x, c.position.y, out, frames - 1, out,
+             c.time, sim.collisions_per_particle(), c.first, c.second, c.position.x, c.position.y, c.position.z, out, frames - 1, out,
              std::max<std::int64_t>(0, frames - 2), 1e-4 * free_time, free_time);
 }
 
-int run(const RunOptions& options) {
+// The run itself, in the engine of dimension D (disks or spheres).
+template <int D>
+int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& grid) {
   const bool resume = !options.resume_dir.empty();
   const std::string out = resume ? options.resume_dir : options.out_dir;
-  // From the start: a signal during set-up stops the run at its first event, checkpointed.
-  const InterruptSignals signals;
   try {
-    const RunConfig config = configuration(options, resume, out);
-    const CellGrid grid = engine_grid(config);
-    std::unique_ptr<RunSession> session = !resume                ? new_session(config, grid, options)
-                                          : options.from_frame ? from_frame_session(config, grid, out, *options.from_frame)
-                                                               : resumed_session(config, grid, out);
+    std::unique_ptr<RunSession<D>> session = !resume              ? new_session<D>(config, grid, options)
+                                             : options.from_frame ? from_frame_session<D>(config, grid, out, *options.from_frame)
+                                                                  : resumed_session<D>(config, grid, out);
     print_header(config);
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
@@ -244,7 +263,7 @@ int run(const RunOptions& options) {
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }
-    const Simulation<2>& sim = session->simulation();
+    const Simulation<D>& sim = session->simulation();
     fmt::print("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n",
                reason == StopReason::kInterrupted ? "stopped" : "finished", stop_text(reason), sim.time(),
                sim.collisions_per_particle(), sim.collisions(), summary["wall_seconds"].get<double>(),
@@ -265,6 +284,21 @@ int run(const RunOptions& options) {
       return kExitCollapse;
     }
     return kExitSuccess;
+  } catch (const CommandFailure& failure) {
+    fmt::print(stderr, "granule run: error: {}\n", failure.message);
+    return failure.code;
+  }
+}
+
+int run(const RunOptions& options) {
+  const bool resume = !options.resume_dir.empty();
+  const std::string out = resume ? options.resume_dir : options.out_dir;
+  // From the start: a signal during set-up stops the run at its first event, checkpointed.
+  const InterruptSignals signals;
+  try {
+    const RunConfig config = configuration(options, resume, out);
+    const CellGrid grid = engine_grid(config);
+    return config.system.dimension == 3 ? run_in<3>(options, config, grid) : run_in<2>(options, config, grid);
   } catch (const CommandFailure& failure) {
     fmt::print(stderr, "granule run: error: {}\n", failure.message);
     return failure.code;

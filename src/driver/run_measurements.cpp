@@ -9,13 +9,24 @@
 
 namespace granule::driver {
 
-RunMeasurements::RunMeasurements(const RunConfig& config, std::string out_dir)
+namespace {
+// fields.cells in 2D; in 3D the default of ~20 spheres per cell.
+FieldGrid fields_grid(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  if (s.dimension == 3) return default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles);
+  return FieldGrid{config.fields.cells.first, config.fields.cells.second, s.length_x, s.length_y};
+}
+}  // namespace
+
+template <int D>
+RunMeasurements<D>::RunMeasurements(const RunConfig& config, std::string out_dir)
     : config_(config),
       out_dir_(std::move(out_dir)),
       frame_{config.system.length_x, config.system.length_y, config.system.shear_velocity},
-      grid_{config.fields.cells.first, config.fields.cells.second, config.system.length_x, config.system.length_y} {}
+      grid_(fields_grid(config)) {}
 
-void RunMeasurements::set_up(Simulation<2>& sim) {
+template <int D>
+void RunMeasurements<D>::set_up(Simulation<D>& sim) {
   const SystemParams& s = config_.system;
   if (config_.fields.enabled) {
     // By default a fields frame goes with every snapshot.
@@ -23,8 +34,12 @@ void RunMeasurements::set_up(Simulation<2>& sim) {
     fields_schedule_ = own ? Schedule{config_.fields.every_collisions_per_particle, config_.fields.every_time}
                            : Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
     fields_schedule_.start(s.particles);
-    collisional_ = std::make_unique<CollisionalStressField>(grid_, s.diameter);
-    sim.add_observer(collisional_.get());
+    // The collisional stress field and the collision statistics are 2D observers (3D runs refuse
+    // [collisions] in their configuration and write kinetic fields only).
+    if constexpr (D == 2) {
+      collisional_ = std::make_unique<CollisionalStressField>(grid_, s.diameter);
+      sim.add_observer(collisional_.get());
+    }
     interval_moments_ = std::make_unique<CellMoments>(grid_);
   }
   const CollisionStatisticsConfig& k = config_.collisions;
@@ -40,21 +55,23 @@ void RunMeasurements::set_up(Simulation<2>& sim) {
       paths_ = std::make_unique<FreePathStatistics>(
           s.particles, FreePathSettings{k.length_bins, k.angle_bins, k.max_length, k.density_windows, k.speed_windows},
           density_.get());
-      sim.add_observer(paths_.get());
+      if constexpr (D == 2) sim.add_observer(paths_.get());
     }
   }
 }
 
-FieldsMetadata RunMeasurements::fields_metadata() const {
+template <int D>
+FieldsMetadata RunMeasurements<D>::fields_metadata() const {
   return {config_.system, config_.lees_edwards ? "lees-edwards" : "periodic", config_.fields.subtract_shear_profile, "run",
           kVersion};
 }
 
-void RunMeasurements::start(Simulation<2>& sim) {
+template <int D>
+void RunMeasurements<D>::start(Simulation<D>& sim) {
   set_up(sim);
   if (config_.fields.enabled) {
     fields_schedule_.advance(sim);
-    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", grid_, fields_metadata(), true);
+    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", grid_, fields_metadata(), D == 2);
     write_fields_frame(sim);
   }
   if (density_) {
@@ -63,7 +80,8 @@ void RunMeasurements::start(Simulation<2>& sim) {
   }
 }
 
-void RunMeasurements::continue_from_frame(Simulation<2>& sim, std::int64_t fields_frames, bool frame_written) {
+template <int D>
+void RunMeasurements<D>::continue_from_frame(Simulation<D>& sim, std::int64_t fields_frames, bool frame_written) {
   set_up(sim);
   interval_start_t_ = sim.time();
   interval_start_c_ = sim.collisions_per_particle();
@@ -79,12 +97,13 @@ void RunMeasurements::continue_from_frame(Simulation<2>& sim, std::int64_t field
   }
 }
 
-void RunMeasurements::resume(Simulation<2>& sim, const StateArchive& archive, const std::string& prefix) {
+template <int D>
+void RunMeasurements<D>::resume(Simulation<D>& sim, const StateArchive& archive, const std::string& prefix) {
   set_up(sim);
   if (config_.fields.enabled) {
     fields_schedule_.restore(archive, prefix + "fields_schedule/");
     interval_moments_->restore(archive, prefix + "interval_moments/");
-    collisional_->restore(archive, prefix + "collisional_stress/");
+    if (collisional_) collisional_->restore(archive, prefix + "collisional_stress/");
     interval_start_t_ = archive.scalar(prefix + "interval_start_t");
     interval_start_c_ = archive.scalar(prefix + "interval_start_c");
     last_fields_collisions_ = archive.integer(prefix + "last_fields_collisions");
@@ -103,16 +122,19 @@ void RunMeasurements::resume(Simulation<2>& sim, const StateArchive& archive, co
       windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
       windows_.start(config_.system.particles);
       windows_.restore(archive, prefix + "windows/");
-      if (impacts_) sim.add_observer(impacts_.get());
+      if constexpr (D == 2) {
+        if (impacts_) sim.add_observer(impacts_.get());
+      }
     }
   }
 }
 
-void RunMeasurements::save(StateArchive& archive, const std::string& prefix) const {
+template <int D>
+void RunMeasurements<D>::save(StateArchive& archive, const std::string& prefix) const {
   if (fields_writer_) {
     fields_schedule_.save(archive, prefix + "fields_schedule/");
     interval_moments_->save(archive, prefix + "interval_moments/");
-    collisional_->save(archive, prefix + "collisional_stress/");
+    if (collisional_) collisional_->save(archive, prefix + "collisional_stress/");
     archive.put_scalar(prefix + "interval_start_t", interval_start_t_);
     archive.put_scalar(prefix + "interval_start_c", interval_start_c_);
     archive.put_integer(prefix + "last_fields_collisions", last_fields_collisions_);
@@ -131,20 +153,25 @@ void RunMeasurements::save(StateArchive& archive, const std::string& prefix) con
   }
 }
 
-std::int64_t RunMeasurements::next_collisions() const {
+template <int D>
+std::int64_t RunMeasurements<D>::next_collisions() const {
   std::int64_t next = fields_writer_ ? fields_schedule_.next_collisions : kNoLimit;
   if (density_) next = std::min(next, statistics_started_ ? windows_.next_collisions : statistics_start_);
   return next;
 }
 
-double RunMeasurements::next_time() const { return fields_writer_ ? fields_schedule_.next_time : kInf; }
+template <int D>
+double RunMeasurements<D>::next_time() const { return fields_writer_ ? fields_schedule_.next_time : kInf; }
 
-void RunMeasurements::after_step(Simulation<2>& sim, bool final) {
+template <int D>
+void RunMeasurements<D>::after_step(Simulation<D>& sim, bool final) {
   if (density_ && !statistics_started_ && sim.collisions() >= statistics_start_) {
     statistics_started_ = true;
     statistics_from_t_ = sim.time();
     statistics_from_c_ = sim.collisions_per_particle();
-    if (impacts_) sim.add_observer(impacts_.get());
+    if constexpr (D == 2) {
+      if (impacts_) sim.add_observer(impacts_.get());
+    }
     if (paths_) paths_->start();
     windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
     windows_.start(config_.system.particles, sim.collisions());
@@ -162,14 +189,16 @@ void RunMeasurements::after_step(Simulation<2>& sim, bool final) {
   }
 }
 
-void RunMeasurements::on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity) {
+template <int D>
+void RunMeasurements<D>::on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity) {
   if (!interval_moments_) return;
   frame_.shear_velocity = shear_velocity;  // the profile u(y) subtracted is that of U now
   interval_moments_->add(state, frame_, config_.fields.subtract_shear_profile);
   last_sample_collisions_ = collisions;
 }
 
-void RunMeasurements::write_fields_frame(const Simulation<2>& sim) {
+template <int D>
+void RunMeasurements<D>::write_fields_frame(const Simulation<D>& sim) {
   const bool subtract = config_.fields.subtract_shear_profile;
   const ParticleState state = sim.state();
   frame_.shear_velocity = sim.image_velocity();
@@ -183,19 +212,24 @@ void RunMeasurements::write_fields_frame(const Simulation<2>& sim) {
   frame.t_start = interval_start_t_;
   frame.c_start = interval_start_c_;
   frame.configurations = interval_moments_->configurations;
+  frame.shear_offset = sim.shear_offset();
+  frame.shear_velocity = sim.image_velocity();
   frame.instant = fields_from_moments(instant, frame_, sim.shear_offset(), subtract);
   frame.average = fields_from_moments(*interval_moments_, frame_, sim.shear_offset(), subtract);
-  frame.collisional = collisional_->stress(sim.time());
-  frame.heat_flux_collisional = collisional_heat_flux(*frame.collisional, frame.average, frame_, subtract);
+  if (collisional_) {
+    frame.collisional = collisional_->stress(sim.time());
+    frame.heat_flux_collisional = collisional_heat_flux(*frame.collisional, frame.average, frame_, subtract);
+  }
   fields_writer_->append(frame);
   last_fields_collisions_ = sim.collisions();
   interval_moments_ = std::make_unique<CellMoments>(grid_);
-  collisional_->restart(sim.time());
+  if (collisional_) collisional_->restart(sim.time());
   interval_start_t_ = frame.t;
   interval_start_c_ = frame.c;
 }
 
-nlohmann::json RunMeasurements::finish(const Simulation<2>& sim) {
+template <int D>
+nlohmann::json RunMeasurements<D>::finish(const Simulation<D>& sim) {
   nlohmann::json j = nlohmann::json::object();
   if (fields_writer_) {
     fields_writer_->finish();
@@ -221,5 +255,8 @@ nlohmann::json RunMeasurements::finish(const Simulation<2>& sim) {
   j["collision_statistics_from_c"] = statistics_from_c_;
   return j;
 }
+
+template class RunMeasurements<2>;
+template class RunMeasurements<3>;
 
 }  // namespace granule::driver

@@ -21,37 +21,38 @@
 
 namespace granule::driver {
 
-class RunMeasurements final : public StopClient {
+template <int D>
+class RunMeasurements final : public StopClient<D> {
  public:
   // `out_dir` receives fields.h5 and collisions.h5 (+ CSV tables).
   RunMeasurements(const RunConfig& config, std::string out_dir);
 
   // Attach the observers and write the first fields frame.
-  void start(Simulation<2>& sim);
+  void start(Simulation<D>& sim);
   // Continue from a snapshot frame instead: fields.h5 keeps its first `fields_frames` frames (the
   // last of them at this frame if `frame_written`), averaging intervals and collision statistics
   // start afresh here.
-  void continue_from_frame(Simulation<2>& sim, std::int64_t fields_frames, bool frame_written);
+  void continue_from_frame(Simulation<D>& sim, std::int64_t fields_frames, bool frame_written);
   // Continue from a checkpoint instead: the files keep the frames written before it.
-  void resume(Simulation<2>& sim, const StateArchive& archive, const std::string& prefix);
+  void resume(Simulation<D>& sim, const StateArchive& archive, const std::string& prefix);
   void save(StateArchive& archive, const std::string& prefix) const;
   // The earliest collision count and time at which the loop must stop for a measurement.
   std::int64_t next_collisions() const override;
   double next_time() const override;
-  void on_stop(Simulation<2>& sim) override { after_step(sim, false); }
+  void on_stop(Simulation<D>& sim) override { after_step(sim, false); }
   // After every step of the loop: start the collision statistics, refresh the local density at
   // window boundaries, write a fields frame when one is due (`final` forces one).
-  void after_step(Simulation<2>& sim, bool final);
+  void after_step(Simulation<D>& sim, bool final);
   // A configuration sampled by the run (output.every_*), the images moving at `shear_velocity`:
   // added to the fields' interval average.
   void on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity);
   // Write collisions.h5 and close fields.h5.  Returns the summary figures for summary.json.
-  nlohmann::json finish(const Simulation<2>& sim);
+  nlohmann::json finish(const Simulation<D>& sim);
 
  private:
-  void write_fields_frame(const Simulation<2>& sim);
+  void write_fields_frame(const Simulation<D>& sim);
   // The parts common to start() and resume(): schedules, accumulators, observers.
-  void set_up(Simulation<2>& sim);
+  void set_up(Simulation<D>& sim);
   FieldsMetadata fields_metadata() const;
 
   RunConfig config_;

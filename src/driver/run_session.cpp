@@ -16,27 +16,37 @@ namespace granule::driver {
 
 namespace {
 
+// The coarse-graining grid of T̄ and κ: diagnostics.cells in 2D; in 3D the default of ~20 spheres
+// per cell.
+FieldGrid diagnostics_grid(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  if (s.dimension == 3) return default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles);
+  return FieldGrid{config.diagnostic_cells.first, config.diagnostic_cells.second, s.length_x, s.length_y};
+}
+
 std::int64_t collisions_for(const RunConfig& config, std::optional<double> c) {
   return c ? std::llround(*c * static_cast<double>(config.system.particles)) : kNoLimit;
 }
 
 }  // namespace
 
-RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial,
+template <int D>
+RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial,
                        const ClockState& clock)
     : config_(config), grid_(grid), out_(std::move(out)) {
   // The elastic pre-run of thesis §1.4.2; the restitution is switched on when it ends.
   SystemParams elastic = config.system;
   elastic.restitution = 1.0;
-  sim_ = std::make_unique<Simulation<2>>(elastic, grid, initial, clock);
+  sim_ = std::make_unique<Simulation<D>>(elastic, grid, initial, clock);
   equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
 }
 
-RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint)
+template <int D>
+RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint)
     : config_(config), grid_(grid), out_(std::move(out)) {
-  sim_ = std::make_unique<Simulation<2>>(config.system, grid, checkpoint, "engine/");
+  sim_ = std::make_unique<Simulation<D>>(config.system, grid, checkpoint, "engine/");
   equilibrate_collisions_ = checkpoint.integer("run/equilibrate_collisions");
   earlier_wall_seconds_ = checkpoint.scalar("run/wall_seconds");
   segment_start_collisions_ = sim_->collisions();
@@ -45,14 +55,15 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
   if (checkpoint.integer("run/in_production") != 0) restore_production(checkpoint);
 }
 
-RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start)
+template <int D>
+RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start)
     : config_(config), grid_(grid), out_(std::move(out)) {
   const SystemParams& system = config.system;
-  sim_ = std::make_unique<Simulation<2>>(system, grid, start.frame.particles, start.frame.clock);
+  sim_ = std::make_unique<Simulation<D>>(system, grid, start.frame.particles, start.frame.clock);
   segment_start_collisions_ = sim_->collisions();
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
-  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config.diagnostic_cells.first, config.diagnostic_cells.second);
+  diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config));
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
   samples_ = start.samples;
@@ -64,25 +75,33 @@ RunSession::RunSession(const RunConfig& config, const CellGrid& grid, std::strin
   snapshotting_.advance(*sim_);
   snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", start.snapshot_frames);
   last_snapshot_events_ = sim_->events();
-  measurements_ = std::make_unique<RunMeasurements>(config, out_);
+  measurements_ = std::make_unique<RunMeasurements<D>>(config, out_);
   measurements_->continue_from_frame(*sim_, start.fields_frames, start.fields_frame_at_start);
   write_timeseries();
 }
 
-void RunSession::start_production() {
+template <int D>
+void RunSession<D>::start_production() {
   const SystemParams& system = config_.system;
   sim_->start_production(system.restitution);
   segment_start_collisions_ = 0;
-  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
+  diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
   samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
                                           sim_->shear_offset()));
-  snapshots_ = std::make_unique<SnapshotWriter>(
-      out_ + "/snapshots.h5", SnapshotMetadata{system, config_.packing_fraction, config_.lees_edwards ? "lees-edwards" : "periodic",
-                                               config_.seed, kVersion});
+  SnapshotMetadata metadata;
+  metadata.system = system;
+  metadata.packing_fraction = config_.packing_fraction;
+  metadata.boundary = config_.lees_edwards ? "lees-edwards" : "periodic";
+  metadata.seed = config_.seed;
+  metadata.version = kVersion;
+  const ParticleState now = sim_->state();
+  metadata.diameters = now.diameter;
+  metadata.masses = now.mass;
+  snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", metadata);
   append_snapshot();
-  measurements_ = std::make_unique<RunMeasurements>(config_, out_);
+  measurements_ = std::make_unique<RunMeasurements<D>>(config_, out_);
   measurements_->start(*sim_);
   sampling_ = Schedule{config_.sample_every_collisions_per_particle, config_.sample_every_time};
   snapshotting_ = Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
@@ -90,9 +109,10 @@ void RunSession::start_production() {
   snapshotting_.start(system.particles);
 }
 
-void RunSession::restore_production(const StateArchive& archive) {
+template <int D>
+void RunSession<D>::restore_production(const StateArchive& archive) {
   const SystemParams& system = config_.system;
-  diagnostics_ = std::make_unique<GlobalDiagnostics>(system, config_.diagnostic_cells.first, config_.diagnostic_cells.second);
+  diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
   diagnostics_->restore(archive, "diagnostics/");
   sim_->add_observer(diagnostics_.get());
   const std::size_t rows = archive.get<double>("run/samples/t").size();
@@ -115,13 +135,14 @@ void RunSession::restore_production(const StateArchive& archive) {
   // A run extended past its old end has new run.* limits: the schedules continue regardless.
   snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", archive.integer("run/snapshot_frames"));
   last_snapshot_events_ = archive.integer("run/last_snapshot_events");
-  measurements_ = std::make_unique<RunMeasurements>(config_, out_);
+  measurements_ = std::make_unique<RunMeasurements<D>>(config_, out_);
   measurements_->resume(*sim_, archive, "measurements/");
   // What the interrupted segment wrote after its checkpoint is not part of this run any more.
   write_timeseries();
 }
 
-void RunSession::save(StateArchive& archive) const {
+template <int D>
+void RunSession<D>::save(StateArchive& archive) const {
   sim_->save(archive, "engine/");
   archive.put_integer("run/equilibrate_collisions", equilibrate_collisions_);
   archive.put_scalar("run/wall_seconds", earlier_wall_seconds_ + progress_.seconds_since_start());
@@ -142,7 +163,8 @@ void RunSession::save(StateArchive& archive) const {
   measurements_->save(archive, "measurements/");
 }
 
-void RunSession::write_checkpoint() {
+template <int D>
+void RunSession<D>::write_checkpoint() {
   StateArchive archive;
   save(archive);
   if (in_production()) write_timeseries();  // the rows on disk include every row of the checkpoint
@@ -150,22 +172,26 @@ void RunSession::write_checkpoint() {
   last_checkpoint_wall_ = progress_.seconds_since_start();
 }
 
-void RunSession::append_snapshot() {
+template <int D>
+void RunSession<D>::append_snapshot() {
   last_snapshot_events_ = sim_->events();
   snapshots_->append({sim_->state(), sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(),
                       sim_->strain(), sim_->image_velocity()});
 }
 
-void RunSession::take_sample() {
+template <int D>
+void RunSession<D>::take_sample() {
   const ParticleState state = sim_->state();
   samples_.push_back(
       diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity(), sim_->shear_offset()));
   measurements_->on_sample(state, sim_->collisions(), sim_->image_velocity());
 }
 
-void RunSession::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }
+template <int D>
+void RunSession<D>::write_timeseries() const { granule::write_timeseries(out_ + "/timeseries.csv", samples_); }
 
-void RunSession::on_stop(Simulation<2>&) {
+template <int D>
+void RunSession<D>::on_stop(Simulation<D>&) {
   if (snapshotting_.due(*sim_)) {
     append_snapshot();
     snapshotting_.advance(*sim_);
@@ -181,7 +207,8 @@ void RunSession::on_stop(Simulation<2>&) {
   }
 }
 
-void RunSession::report_progress() {
+template <int D>
+void RunSession<D>::report_progress() {
   const double fraction =
       std::max(until_collisions_ == kNoLimit ? 0.0 : static_cast<double>(sim_->collisions()) / static_cast<double>(until_collisions_),
                std::isfinite(until_time_) ? sim_->time() / until_time_ : 0.0);
@@ -191,7 +218,8 @@ void RunSession::report_progress() {
                    elapsed > 0.0 ? done / elapsed : 0.0);
 }
 
-StopReason RunSession::run(const volatile std::sig_atomic_t* interrupt) {
+template <int D>
+StopReason RunSession<D>::run(const volatile std::sig_atomic_t* interrupt) {
   sim_->set_interrupt_flag(interrupt);
   const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);  // progress granularity
   while (true) {
@@ -218,7 +246,8 @@ StopReason RunSession::run(const volatile std::sig_atomic_t* interrupt) {
   }
 }
 
-nlohmann::json RunSession::finish(StopReason reason) {
+template <int D>
+nlohmann::json RunSession<D>::finish(StopReason reason) {
   progress_.finish();
   write_checkpoint();
   // The end-of-run outputs, after the checkpoint: a continuation drops them again.
@@ -246,5 +275,8 @@ nlohmann::json RunSession::finish(StopReason reason) {
   write_file_atomically(out_ + "/summary.json", summary.dump(2) + "\n");
   return summary;
 }
+
+template class RunSession<2>;
+template class RunSession<3>;
 
 }  // namespace granule::driver

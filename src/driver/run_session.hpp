@@ -28,7 +28,8 @@ namespace granule::driver {
 
 // The session is itself the stop client of its time series and snapshots; the measurements are
 // another (driver/stop_loop.hpp).
-class RunSession final : public StopClient {
+template <int D>
+class RunSession final : public StopClient<D> {
  public:
   // A new run into the existing, empty directory `out` from the initial state of §1.4.2, the
   // images held at `clock.held_shear_velocity` until production starts.
@@ -52,7 +53,7 @@ class RunSession final : public StopClient {
   // The checkpoint, the end-of-run outputs and summary.json.  Returns the summary.
   nlohmann::json finish(StopReason reason);
 
-  const Simulation<2>& simulation() const { return *sim_; }
+  const Simulation<D>& simulation() const { return *sim_; }
   const std::vector<DiagnosticsSample>& samples() const { return samples_; }
   std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
   bool measurements_enabled() const { return measurements_ != nullptr; }
@@ -62,7 +63,7 @@ class RunSession final : public StopClient {
   }
   double next_time() const override { return std::min(sampling_.next_time, snapshotting_.next_time); }
   // Samples and snapshots due at the present stop.
-  void on_stop(Simulation<2>& sim) override;
+  void on_stop(Simulation<D>& sim) override;
 
  private:
   bool in_production() const { return diagnostics_ != nullptr; }
@@ -78,18 +79,18 @@ class RunSession final : public StopClient {
   RunConfig config_;
   CellGrid grid_;
   std::string out_;
-  std::unique_ptr<Simulation<2>> sim_;
+  std::unique_ptr<Simulation<D>> sim_;
   std::int64_t equilibrate_collisions_ = 0;
   std::int64_t until_collisions_ = kNoLimit;
   double until_time_ = kInf;
 
   // Production (after the pre-run).
-  std::unique_ptr<GlobalDiagnostics> diagnostics_;
+  std::unique_ptr<GlobalDiagnostics<D>> diagnostics_;
   std::vector<DiagnosticsSample> samples_;
   Schedule sampling_, snapshotting_;
   std::unique_ptr<SnapshotWriter> snapshots_;
   std::int64_t last_snapshot_events_ = -1;
-  std::unique_ptr<RunMeasurements> measurements_;
+  std::unique_ptr<RunMeasurements<D>> measurements_;
 
   Progress progress_;
   double earlier_wall_seconds_ = 0.0;  // of the segments before a resume

@@ -16,15 +16,23 @@ const char* stop_text(StopReason reason) {
   return "unknown";
 }
 
-nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, const CellGrid& grid, StopReason reason,
+template <int D>
+nlohmann::json summary_json(const RunConfig& config, const Simulation<D>& sim, const CellGrid& grid, StopReason reason,
                             const RunFacts& facts, const std::vector<DiagnosticsSample>& samples) {
   const SystemParams& s = config.system;
   nlohmann::json j;
   j["version"] = kVersion;
   j["particles"] = s.particles;
   j["diameter"] = s.diameter;
-  j["area_fraction"] = config.packing_fraction;
-  j["box"] = {s.length_x, s.length_y};
+  j["dimension"] = D;
+  j["packing_fraction"] = config.packing_fraction;
+  if (D == 2) {
+    j["area_fraction"] = config.packing_fraction;
+    j["box"] = {s.length_x, s.length_y};
+  } else {
+    j["box"] = {s.length_x, s.length_y, s.length_z};
+  }
+  j["polydisperse"] = !config.diameters.monodisperse();
   j["restitution"] = s.restitution;
   j["tc_duration"] = s.tc_duration;
   j["boundary"] = config.lees_edwards ? "lees-edwards" : "periodic";
@@ -42,7 +50,7 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, c
   j["c"] = sim.collisions_per_particle();
   j["stop_reason"] = stop_text(reason);
   j["snapshots"] = facts.snapshots;
-  j["engine_cells"] = {grid.nx, grid.ny};
+  j["engine_cells"] = D == 2 ? nlohmann::json{grid.nx, grid.ny} : nlohmann::json{grid.nx, grid.ny, grid.nz};
   j["bytes_per_particle"] = sim.bytes_per_particle();
   if (!samples.empty()) {
     // The Chapter 4 flow measures of the last sample (docs/macrostructure.md).
@@ -50,7 +58,7 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, c
     for_each_flow_measure(samples.back().flow, [&](const char* name, double value) { flow[name] = value; });
     j["flow_classification"] = flow;
   }
-  if (config.lees_edwards && !samples.empty()) {
+  if (D == 2 && config.lees_edwards && !samples.empty()) {
     // Steady-shear temperature: measured T̄ (mean over the second half of the samples) beside
     // the thesis's fit (3.1) and the Jenkins–Richman dilute law (3.2).
     const std::size_t from = samples.size() / 2;
@@ -74,5 +82,10 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, c
   }
   return j;
 }
+
+template nlohmann::json summary_json(const RunConfig&, const Simulation<2>&, const CellGrid&, StopReason, const RunFacts&,
+                                     const std::vector<DiagnosticsSample>&);
+template nlohmann::json summary_json(const RunConfig&, const Simulation<3>&, const CellGrid&, StopReason, const RunFacts&,
+                                     const std::vector<DiagnosticsSample>&);
 
 }  // namespace granule::driver

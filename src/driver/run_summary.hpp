@@ -22,7 +22,8 @@ struct RunFacts {
   std::int64_t snapshots = 0;
 };
 
-nlohmann::json summary_json(const RunConfig& config, const Simulation<2>& sim, const CellGrid& grid, StopReason reason,
+template <int D>
+nlohmann::json summary_json(const RunConfig& config, const Simulation<D>& sim, const CellGrid& grid, StopReason reason,
                             const RunFacts& facts, const std::vector<DiagnosticsSample>& samples);
 
 }  // namespace granule::driver

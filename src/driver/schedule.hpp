@@ -40,9 +40,11 @@ struct Schedule {
     next_collisions = by_collisions() ? from_collisions + interval_collisions(1.0) : kNoLimit;
     next_time = every_t ? from_time + *every_t : kInf;
   }
-  bool due(const Simulation<2>& sim) const { return sim.collisions() >= next_collisions || sim.time() >= next_time; }
+  template <typename Engine>
+  bool due(const Engine& sim) const { return sim.collisions() >= next_collisions || sim.time() >= next_time; }
   // Move to the first trigger after the present.
-  void advance(const Simulation<2>& sim) {
+  template <typename Engine>
+  void advance(const Engine& sim) {
     if (by_collisions() && sim.collisions() >= next_collisions) {
       const double periods =
           std::floor(static_cast<double>(sim.collisions() - origin_collisions) / (*every_c * static_cast<double>(particles)));

@@ -15,6 +15,7 @@
 
 namespace granule::driver {
 
+template <int D>
 class StopClient {
  public:
   virtual ~StopClient() = default;
@@ -22,7 +23,7 @@ class StopClient {
   virtual std::int64_t next_collisions() const = 0;
   virtual double next_time() const = 0;
   // The engine has stopped (at its stop or another client's): act if due.
-  virtual void on_stop(Simulation<2>& sim) = 0;
+  virtual void on_stop(Simulation<D>& sim) = 0;
 };
 
 struct StopLimits {
@@ -32,6 +33,7 @@ struct StopLimits {
 
 // Runs `sim` to the earliest stop of `clients` within `limits`, then calls on_stop of every
 // client in order, unless the run was interrupted (then nothing is written: the caller saves).
-StopReason advance_to_next_stop(Simulation<2>& sim, const std::vector<StopClient*>& clients, const StopLimits& limits);
+template <int D>
+StopReason advance_to_next_stop(Simulation<D>& sim, const std::vector<StopClient<D>*>& clients, const StopLimits& limits);
 
 }  // namespace granule::driver

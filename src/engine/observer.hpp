@@ -27,6 +27,7 @@ struct CollisionRecord {
   double impulse = 0.0;          // J·k̂ = (1 + e)/2 (v21·k̂) > 0, momentum given to disk 2
                                  // ((1 + e) μ (v21·k̂) for masses m1, m2)
   double restitution = 1.0;      // the e actually applied (1 inside the TC model's window)
+  double contact_distance = 0.0; // σ_ij = (σ1 + σ2)/2 (σ when monodisperse)
   double first_mass = 1.0;       // m1, m2 (1 unless the run is polydisperse)
   double second_mass = 1.0;
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves

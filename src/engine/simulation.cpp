@@ -386,6 +386,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     record.relative_velocity = v1 - v2;
     record.impulse = mass_.empty() ? normal_impulse(v1 - v2, k_hat, e) : normal_impulse(v1 - v2, k_hat, e, m1, m2);
     record.restitution = e;
+    record.contact_distance = contact_distance(i, j);
     record.first_mass = m1;
     record.second_mass = m2;
     record.image_y = iy;

@@ -66,15 +66,17 @@ void require_one_of(const ConfigReader& in, const std::string& count, const std:
 // The engine's cell grid must exist (choose_cell_grid explains why not) and have 32-bit cell ids.
 void check_engine_grid(const RunConfig& c) {
   const SystemParams& s = c.system;
-  if (s.dimension == 3) return;  // the grid of choose_cell_grid is the 2D one
-  const CellGridChoice choice = choose_cell_grid(
-      {s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells});
+  CellGridRequest request{s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells};
+  request.dimension = s.dimension;
+  request.length_z = s.length_z;
+  const CellGridChoice choice = choose_cell_grid(request);
   if (!choice.grid) throw ConfigError{choice.error};
-  const std::int64_t cells = static_cast<std::int64_t>(choice.grid->nx) * choice.grid->ny;
+  const std::int64_t cells = choice.grid->cell_count();
   if (cells > kMaxEngineCells) {
-    throw ConfigError{fmt::format("system.box = [{}, {}] gives an engine grid of {} × {} = {} cells, more than "
-                                  "2^31 − 1: set engine.cells or raise engine.particles_per_cell",
-                                  s.length_x, s.length_y, choice.grid->nx, choice.grid->ny, cells)};
+    throw ConfigError{fmt::format("system.box gives an engine grid of {} × {} × {} = {} cells, more than "
+                                  "2^31 − 1: {}raise engine.particles_per_cell",
+                                  choice.grid->nx, choice.grid->ny, choice.grid->nz, cells,
+                                  s.dimension == 2 ? "set engine.cells or " : "")};
   }
 }
 
@@ -128,6 +130,13 @@ RunConfig resolve(const toml::table& root) {
                                    min_per_cell > 0.1 ? fmt::format(" for N = {} (at most 2^31 − 1 engine cells)", n)
                                                       : std::string{})
                              .value_or(1.0);
+  // Grids given by hand have two counts: 3D runs choose theirs (engine, diagnostics, fields).
+  if (s.dimension == 3) {
+    for (const char* key : {"engine.cells", "diagnostics.cells", "fields.cells"}) {
+      if (in.has(key)) throw ConfigError{fmt::format("{} is for 2D runs only: with system.dimension = 3 the grid is chosen "
+                                                     "automatically (~1 sphere per engine cell, ~20 per field cell)", key)};
+    }
+  }
   c.engine_cells = in.int_pair("engine.cells", 3, 1 << 15);
   check_engine_grid(c);
   const auto diag = in.int_pair("diagnostics.cells", 1, 1 << 14);
@@ -147,8 +156,13 @@ RunConfig resolve(const toml::table& root) {
   f.subtract_shear_profile = in.boolean("fields.subtract_shear_profile").value_or(false);
 
   CollisionStatisticsConfig& k = c.collisions;
-  k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(true);
+  // Impact parameters and free paths are measured on disks; 3D runs have them off (and refuse them).
+  k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(s.dimension == 2);
   k.free_paths = in.boolean("collisions.free_paths").value_or(false);
+  if (s.dimension == 3 && (k.impact_parameters || k.free_paths)) {
+    throw ConfigError{"collisions.impact_parameters and collisions.free_paths are measured in 2D runs only: with "
+                      "system.dimension = 3 set them to false"};
+  }
   k.window_collisions_per_particle =
       collision_count_setting(in, "collisions.window_collisions_per_particle", n).value_or(1.0);
   k.from_collisions_per_particle =
@@ -254,10 +268,13 @@ std::string to_toml(const RunConfig& c) {
   out += fmt::format("checkpoint_every_seconds = {:.17g}\n", c.checkpoint_every_seconds);
   out += fmt::format("\n[engine]\nparticles_per_cell = {:.17g}\n", c.particles_per_cell);
   if (c.engine_cells) out += fmt::format("cells = [{}, {}]\n", c.engine_cells->first, c.engine_cells->second);
-  out += fmt::format("\n[diagnostics]\ncells = [{}, {}]\n", c.diagnostic_cells.first, c.diagnostic_cells.second);
+  // Hand-made grids are 2D keys: a 3D run's grids follow from its box and N.
+  const bool planar = c.system.dimension == 2;
+  if (planar) out += fmt::format("\n[diagnostics]\ncells = [{}, {}]\n", c.diagnostic_cells.first, c.diagnostic_cells.second);
   const FieldsConfig& f = c.fields;
-  out += fmt::format("\n[fields]\nenabled = {}\ncells = [{}, {}]\nsubtract_shear_profile = {}\n", f.enabled, f.cells.first,
-                     f.cells.second, f.subtract_shear_profile);
+  out += fmt::format("\n[fields]\nenabled = {}\n", f.enabled);
+  if (planar) out += fmt::format("cells = [{}, {}]\n", f.cells.first, f.cells.second);
+  out += fmt::format("subtract_shear_profile = {}\n", f.subtract_shear_profile);
   if (f.every_collisions_per_particle) out += fmt::format("every_collisions_per_particle = {:.17g}\n", *f.every_collisions_per_particle);
   if (f.every_time) out += fmt::format("every_time = {:.17g}\n", *f.every_time);
   const CollisionStatisticsConfig& k = c.collisions;

@@ -397,6 +397,21 @@ void write_vector(hid_t location, const char* name, const std::vector<double>& d
   write_dataset(location, name, {static_cast<hsize_t>(data.size())}, data);
 }
 
+std::vector<double> read_vector(hid_t location, const char* name) {
+  const std::vector<hsize_t> shape = dataset_shape(location, name);
+  if (shape.size() != 1) throw IoError("dataset " + std::string(name) + " in " + file_name(location) + " is not one-dimensional");
+  std::vector<double> values(static_cast<std::size_t>(shape[0]));
+  Handle dataset = open_dataset(location, name);
+  if (!values.empty()) {
+    check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), location, "read dataset", name);
+  }
+  dataset.close();
+  return values;
+}
+
+bool has_attribute(hid_t object, const char* name) { return H5Aexists(object, name) > 0; }
+bool has_link(hid_t location, const char* name) { return H5Lexists(location, name, H5P_DEFAULT) > 0; }
+
 hid_t create_group(hid_t location, const char* name) {
   Handle properties = untimed_creation_properties(H5P_GROUP_CREATE, location, name);
   Handle group = owned(H5Gcreate2(location, name, H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Gclose, location,

@@ -117,6 +117,10 @@ class PartialFile {
 // A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);
 void write_vector(hid_t location, const char* name, const std::vector<double>& data);
+// A whole one-dimensional double dataset.  Throws IoError.
+std::vector<double> read_vector(hid_t location, const char* name);
+bool has_attribute(hid_t object, const char* name);
+bool has_link(hid_t location, const char* name);
 // A group; the caller owns the identifier.
 hid_t create_group(hid_t location, const char* name);
 

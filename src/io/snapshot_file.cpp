@@ -14,7 +14,10 @@ namespace {
 using namespace h5;
 
 constexpr const char* kFormat = "granule-snapshots";
-constexpr int kFormatVersion = 2;  // 2: per-frame shear_velocity and strain_at_reference
+// 2: per-frame shear_velocity and strain_at_reference; 3: `dimension`, rows of d in positions and
+// velocities, `packing_fraction`, per-particle `diameters` and `masses` (polydisperse runs).
+// Files of version 2 (no `dimension`) are read as 2D.
+constexpr int kFormatVersion = 3;
 
 // The per-frame scalars of the schema, in one list for writing and reading.
 template <typename Frame, typename Visit>
@@ -30,13 +33,23 @@ void for_each_scalar(Frame& frame, Visit&& visit) {
   visit("events", H5T_NATIVE_INT64, &frame.clock.events);
 }
 
-std::vector<double> interleave(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> out(2 * a.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    out[2 * i] = a[i];
-    out[2 * i + 1] = b[i];
+// Rows of d components per particle, as the (S, N, d) datasets store them.
+std::vector<double> interleave(const ParticleState& state, bool velocities) {
+  const int d = state.dimension;
+  std::vector<double> out(static_cast<std::size_t>(d) * state.size());
+  for (int a = 0; a < d; ++a) {
+    const std::vector<double>& component = velocities ? state.velocity(a) : state.position(a);
+    for (std::size_t i = 0; i < state.size(); ++i) out[static_cast<std::size_t>(d) * i + static_cast<std::size_t>(a)] = component[i];
   }
   return out;
+}
+
+void deinterleave(const std::vector<double>& rows, ParticleState& state, bool velocities) {
+  const int d = state.dimension;
+  for (int a = 0; a < d; ++a) {
+    std::vector<double>& component = velocities ? state.velocity(a) : state.position(a);
+    for (std::size_t i = 0; i < state.size(); ++i) component[i] = rows[static_cast<std::size_t>(d) * i + static_cast<std::size_t>(a)];
+  }
 }
 
 // The metadata of an open snapshot file.
@@ -47,11 +60,15 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
   m.boundary = read_string_attribute(f, "boundary");
   m.system.particles = read_attribute<std::int64_t>(f, "particles", H5T_NATIVE_INT64);
   m.system.diameter = read_attribute<double>(f, "diameter", H5T_NATIVE_DOUBLE);
-  double box[2] = {0.0, 0.0};
+  m.system.dimension = has_attribute(f, "dimension") ? read_attribute<int>(f, "dimension", H5T_NATIVE_INT) : 2;
+  if (m.system.dimension != 2 && m.system.dimension != 3) throw std::runtime_error(path + " has an invalid dimension");
+  double box[3] = {0.0, 0.0, 1.0};
   read_attribute_values(f, "box", H5T_NATIVE_DOUBLE, box);
   m.system.length_x = box[0];
   m.system.length_y = box[1];
-  m.area_fraction = read_attribute<double>(f, "area_fraction", H5T_NATIVE_DOUBLE);
+  m.system.length_z = box[2];
+  m.packing_fraction = read_attribute<double>(f, m.system.dimension == 2 ? "area_fraction" : "packing_fraction", H5T_NATIVE_DOUBLE);
+  m.polydisperse = has_link(f, "diameters");
   m.system.restitution = read_attribute<double>(f, "restitution", H5T_NATIVE_DOUBLE);
   m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
   m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
@@ -68,16 +85,23 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
   const hid_t f = file_->get();
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
-  const double box[2] = {m.system.length_x, m.system.length_y};
-  write_attribute(f, "box", H5T_NATIVE_DOUBLE, box, 2);
-  write_attribute(f, "area_fraction", H5T_NATIVE_DOUBLE, &m.area_fraction);
+  write_attribute(f, "dimension", H5T_NATIVE_INT, &m.system.dimension);
+  const double box[3] = {m.system.length_x, m.system.length_y, m.system.length_z};
+  write_attribute(f, "box", H5T_NATIVE_DOUBLE, box, static_cast<hsize_t>(m.system.dimension));
+  write_attribute(f, "packing_fraction", H5T_NATIVE_DOUBLE, &m.packing_fraction);
+  if (m.system.dimension == 2) write_attribute(f, "area_fraction", H5T_NATIVE_DOUBLE, &m.packing_fraction);
   write_attribute(f, "restitution", H5T_NATIVE_DOUBLE, &m.system.restitution);
   write_attribute(f, "tc_duration", H5T_NATIVE_DOUBLE, &m.system.tc_duration);
   write_string_attribute(f, "boundary", m.boundary);
   write_attribute(f, "shear_velocity", H5T_NATIVE_DOUBLE, &m.system.shear_velocity);
   write_attribute(f, "seed", H5T_NATIVE_UINT64, &m.seed);
   const auto n = static_cast<hsize_t>(m.system.particles);
-  for (const char* name : {"positions", "velocities"}) add_frames(f, name, H5T_IEEE_F64LE, {n, 2});
+  const auto d = static_cast<hsize_t>(m.system.dimension);
+  for (const char* name : {"positions", "velocities"}) add_frames(f, name, H5T_IEEE_F64LE, {n, d});
+  if (!m.diameters.empty()) {
+    write_vector(f, "diameters", m.diameters);
+    write_vector(f, "masses", m.masses);
+  }
   const SnapshotFrame layout;
   for_each_scalar(layout, [&](const char* name, hid_t memory_type, const void*) {
     add_frames(f, name, H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
@@ -100,8 +124,8 @@ std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
 void SnapshotWriter::append(const SnapshotFrame& frame) {
   const hid_t f = file_->get();
   const auto k = static_cast<hsize_t>(file_->frames());
-  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles.x, frame.particles.y).data(), k);
-  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles.vx, frame.particles.vy).data(), k);
+  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles, false).data(), k);
+  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles, true).data(), k);
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
   file_->end_frame();
@@ -122,18 +146,20 @@ SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
 
   const auto n = static_cast<std::size_t>(m.system.particles);
   SnapshotFrame& s = out.frame;
-  std::vector<double> buffer(2 * n);
+  s.particles.dimension = m.system.dimension;
+  if (m.polydisperse) {
+    s.particles.diameter = read_vector(f, "diameters");
+    s.particles.mass = read_vector(f, "masses");
+    if (s.particles.diameter.size() != n || s.particles.mass.size() != n) {
+      throw std::runtime_error(path + " has diameters or masses of the wrong length");
+    }
+  }
   s.particles.resize(n);
+  std::vector<double> buffer(static_cast<std::size_t>(m.system.dimension) * n);
   read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  for (std::size_t i = 0; i < n; ++i) {
-    s.particles.x[i] = buffer[2 * i];
-    s.particles.y[i] = buffer[2 * i + 1];
-  }
+  deinterleave(buffer, s.particles, false);
   read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  for (std::size_t i = 0; i < n; ++i) {
-    s.particles.vx[i] = buffer[2 * i];
-    s.particles.vy[i] = buffer[2 * i + 1];
-  }
+  deinterleave(buffer, s.particles, true);
   for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
   s.clock.protocol_running = true;  // frames are written in production only
   if (m.system.tc_duration > 0.0) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/system_params.hpp"
 
@@ -17,11 +18,15 @@ class PartialFile;
 }
 
 struct SnapshotMetadata {
-  SystemParams system;
-  double area_fraction = 0.0;
+  SystemParams system;          // with its dimension and L_z
+  double packing_fraction = 0.0;  // area fraction (2D) or volume fraction (3D)
   std::string boundary;  // "periodic" or "lees-edwards"
   std::uint64_t seed = 0;
   std::string version;
+  // Per-particle diameters and masses of a polydisperse run (empty otherwise); a read fills them
+  // into the frame's ParticleState instead and sets `polydisperse`.
+  std::vector<double> diameters, masses;
+  bool polydisperse = false;
 };
 
 struct SnapshotFrame {

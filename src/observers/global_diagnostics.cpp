@@ -1,6 +1,7 @@
 #include "observers/global_diagnostics.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace granule {
 
@@ -20,35 +21,41 @@ double mean_cell_temperature(const CellFields& cells) {
 
 }  // namespace
 
-GlobalDiagnostics::GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y)
-    : params_(params),
-      frame_{params.length_x, params.length_y, params.shear_velocity},
-      grid_{cells_x, cells_y, params.length_x, params.length_y} {}
+template <int D>
+GlobalDiagnostics<D>::GlobalDiagnostics(const SystemParams& params, const FieldGrid& cells)
+    : params_(params), frame_{params.length_x, params.length_y, params.shear_velocity}, grid_(cells) {}
 
-void GlobalDiagnostics::on_collision(const CollisionRecord<2>& record) {
-  impulse_sum_ += record.impulse;
-  impulse_xy_sum_ += record.impulse * record.contact_normal.x * record.contact_normal.y;
+template <int D>
+void GlobalDiagnostics<D>::on_collision(const CollisionRecord<D>& record) {
+  // The virial of the pair is J σ_ij; in units of σ so that equal sizes add J itself (ratio 1).
+  const double weight = record.impulse * (record.contact_distance / params_.diameter);
+  impulse_sum_ += weight;
+  impulse_xy_sum_ += weight * record.contact_normal.x * record.contact_normal.y;
 }
 
-void GlobalDiagnostics::restart_interval(double t, std::int64_t collisions) {
+template <int D>
+void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
   impulse_sum_ = 0.0;
   impulse_xy_sum_ = 0.0;
   interval_start_ = t;
   interval_collisions_ = collisions;
 }
 
-CellFields GlobalDiagnostics::cell_fields(const ParticleState& state, bool subtract_shear_profile) const {
+template <int D>
+CellFields GlobalDiagnostics<D>::cell_fields(const ParticleState& state, bool subtract_shear_profile) const {
   CellMoments moments(grid_);
   moments.add(state, frame_, subtract_shear_profile);
   return fields_from_moments(moments, frame_, 0.0, subtract_shear_profile);
 }
 
-DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t, std::int64_t collisions,
-                                            double shear_velocity, double shear_offset) {
+template <int D>
+DiagnosticsSample GlobalDiagnostics<D>::sample(const ParticleState& state, double t, std::int64_t collisions,
+                                               double shear_velocity, double shear_offset) {
   frame_.shear_velocity = shear_velocity;  // u(y) of the images' velocity now (shear protocols)
   const std::size_t n = state.size();
   const double nd = static_cast<double>(n);
-  const double area = params_.length_x * params_.length_y;
+  const double volume = params_.length_x * params_.length_y * (D == 3 ? params_.length_z : 1.0);
+  constexpr double kPerDegree = 1.0 / D;  // T per degree of freedom (½ in 2D: eq 1.3)
   DiagnosticsSample out;
   out.t = t;
   out.c = static_cast<double>(collisions) / nd;
@@ -61,27 +68,40 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
   out.temperature = mean_cell_temperature(cells);
   out.temperature_thesis_cells = frame_.sheared() ? mean_cell_temperature(cell_fields(state, false)) : out.temperature;
 
+  // Lab and fluctuating (v − u(y)) velocities of particle i; the sums run x, y, z in order.
+  const auto fluctuation = [&](std::size_t i, int axis) {
+    return axis == 0 ? state.vx[i] - frame_.mean_flow(state.y[i]) : state.velocity(axis)[i];
+  };
   double kinetic = 0.0, fluct = 0.0, fluct_xy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double vx = state.vx[i], vy = state.vy[i];
-    kinetic += vx * vx + vy * vy;
-    const double ux = vx - frame_.mean_flow(state.y[i]);
-    fluct += ux * ux + vy * vy;
-    fluct_xy += ux * vy;
+    double v2 = state.vx[i] * state.vx[i];
+    double u2 = fluctuation(i, 0) * fluctuation(i, 0);
+    for (int a = 1; a < D; ++a) {
+      v2 += state.velocity(a)[i] * state.velocity(a)[i];
+      u2 += fluctuation(i, a) * fluctuation(i, a);
+    }
+    const double m = state.mass_of(i);
+    kinetic += m * v2;
+    fluct += m * u2;
+    fluct_xy += m * fluctuation(i, 0) * state.vy[i];
   }
   out.kinetic_energy = 0.5 * kinetic / nd;
-  out.temperature_global = 0.5 * fluct / nd;
-  out.pressure_kinetic = 0.5 * fluct / area;
-  out.shear_stress_kinetic = fluct_xy / area;
+  out.temperature_global = kPerDegree * fluct / nd;
+  out.pressure_kinetic = kPerDegree * fluct / volume;
+  out.shear_stress_kinetic = fluct_xy / volume;
 
   // Moments of the fluctuating velocity v' = v − u(y) − V(r), V(r) the cell mean of v − u (κ,
   // eq 1.8; §2.1): the same fluctuation whose cell variances make T̄.
   double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t c = grid_.index(state.x[i], state.y[i]);
-    const double ux = state.vx[i] - frame_.mean_flow(state.y[i]) - cells.velocity_x[c];
+    const std::size_t c = D == 3 ? grid_.index(state.x[i], state.y[i], state.z[i]) : grid_.index(state.x[i], state.y[i]);
+    const double ux = fluctuation(i, 0) - cells.velocity_x[c];
     const double uy = state.vy[i] - cells.velocity_y[c];
-    const double u2 = ux * ux + uy * uy;
+    double u2 = ux * ux + uy * uy;
+    if constexpr (D == 3) {
+      const double uz = state.vz[i] - cells.velocity_z[c];
+      u2 += uz * uz;
+    }
     m2 += u2;
     m4 += u2 * u2;
     m3x += ux * ux * ux;
@@ -96,31 +116,40 @@ DiagnosticsSample GlobalDiagnostics::sample(const ParticleState& state, double t
 
   const double dt = t - interval_start_;
   if (dt > 0.0) {
-    out.pressure_collisional = params_.diameter * impulse_sum_ / (2.0 * area * dt);
-    out.shear_stress_collisional = params_.diameter * impulse_xy_sum_ / (area * dt);
+    out.pressure_collisional = params_.diameter * impulse_sum_ / (static_cast<double>(D) * volume * dt);
+    out.shear_stress_collisional = params_.diameter * impulse_xy_sum_ / (volume * dt);
     out.collision_rate = static_cast<double>(collisions - interval_collisions_) / nd / dt;
   }
   // The Chapter 4 flow measures, with ρ(y) and V_x(y) on the rows of the coarse-graining grid.
-  FlowClassificationSettings classification;
-  classification.rows = grid_.ny;
-  out.flow = classify_flow(state, {params_.length_x, params_.length_y, shear_velocity}, shear_offset, params_.diameter,
-                           classification);
+  if constexpr (D == 2) {
+    FlowClassificationSettings classification;
+    classification.rows = grid_.ny;
+    out.flow = classify_flow(state, {params_.length_x, params_.length_y, shear_velocity}, shear_offset, params_.diameter,
+                             classification);
+  } else {
+    for_each_flow_measure(out.flow, [](const char*, double& value) { value = std::numeric_limits<double>::quiet_NaN(); });
+  }
   restart_interval(t, collisions);
   return out;
 }
 
-void GlobalDiagnostics::save(StateArchive& archive, const std::string& prefix) const {
+template <int D>
+void GlobalDiagnostics<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "impulse_sum", impulse_sum_);
   archive.put_scalar(prefix + "impulse_xy_sum", impulse_xy_sum_);
   archive.put_scalar(prefix + "interval_start", interval_start_);
   archive.put_integer(prefix + "interval_collisions", interval_collisions_);
 }
 
-void GlobalDiagnostics::restore(const StateArchive& archive, const std::string& prefix) {
+template <int D>
+void GlobalDiagnostics<D>::restore(const StateArchive& archive, const std::string& prefix) {
   impulse_sum_ = archive.scalar(prefix + "impulse_sum");
   impulse_xy_sum_ = archive.scalar(prefix + "impulse_xy_sum");
   interval_start_ = archive.scalar(prefix + "interval_start");
   interval_collisions_ = archive.integer(prefix + "interval_collisions");
 }
+
+template class GlobalDiagnostics<2>;
+template class GlobalDiagnostics<3>;
 
 }  // namespace granule

@@ -23,15 +23,15 @@ struct DiagnosticsSample {
   double t = 0.0;
   double c = 0.0;                     // collisions per particle, thesis convention (total / N)
   double shear_velocity = 0.0;        // U(t): the images' velocity (Lees–Edwards protocol; 0 if periodic)
-  double kinetic_energy = 0.0;        // ½⟨v²⟩ per particle, lab frame
+  double kinetic_energy = 0.0;        // ½⟨m v²⟩ per particle, lab frame
   double temperature = 0.0;           // T̄: mean over occupied cells of T(r) (eq 1.3), v − u(y) in place of v
   double temperature_thesis_cells = 0.0;  // the same with lab velocities (the thesis's T̄; = T̄ if periodic)
-  double temperature_global = 0.0;    // ½⟨v'²⟩ with v' = v − u(y) (u = 0 for periodic boxes)
+  double temperature_global = 0.0;    // ⟨m v'²⟩/d with v' = v − u(y) (u = 0 for periodic boxes)
   double flatness = 0.0;              // κ = ⟨v'⁴⟩ / ⟨v'²⟩², v' = v − u(y) − V(r) as in T̄
   double asymmetry_x = 0.0;           // ⟨v'_x³⟩ / ⟨v'²⟩^{3/2}
   double asymmetry_y = 0.0;           // ⟨v'_y³⟩ / ⟨v'²⟩^{3/2}
-  double pressure_kinetic = 0.0;      // n T_global: half trace of (1.4) over the whole box
-  double pressure_collisional = 0.0;  // σ/(2 A Δt) Σ J over the interval: half trace of (1.6)
+  double pressure_kinetic = 0.0;      // n T_global: trace/d of (1.4) over the whole box
+  double pressure_collisional = 0.0;  // Σ σ_ij J / (d V Δt) over the interval: trace/d of (1.6)
   double shear_stress_collisional = 0.0;  // xy component of (1.6) over the interval
   double shear_stress_kinetic = 0.0;      // xy component of (1.4), whole box
   double collision_rate = 0.0;        // Δc / Δt over the interval
@@ -59,12 +59,17 @@ void for_each_column(Sample& s, Visit&& visit) {
   for_each_flow_measure(s.flow, visit);
 }
 
-class GlobalDiagnostics final : public EventObserver<2> {
+// In 3D the Chapter 4 flow measures (2D pictures of bands and clusters) are NaN.
+template <int D>
+class GlobalDiagnostics final : public EventObserver<D> {
  public:
-  // cells_x × cells_y is the coarse-graining grid of T̄ and κ (independent of the engine's cells).
-  GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y);
+  // `cells` is the coarse-graining grid of T̄ and κ (independent of the engine's cells).
+  GlobalDiagnostics(const SystemParams& params, const FieldGrid& cells);
+  // 2D: a grid of cells_x × cells_y.
+  GlobalDiagnostics(const SystemParams& params, int cells_x, int cells_y)
+      : GlobalDiagnostics(params, FieldGrid{cells_x, cells_y, params.length_x, params.length_y}) {}
 
-  void on_collision(const CollisionRecord<2>& record) override;
+  void on_collision(const CollisionRecord<D>& record) override;
   // Measure the configuration `state` at time t (collisions since production started) and
   // close the current interval.  `shear_velocity` and `shear_offset` are the image velocity U and
   // offset Δ at time t (they change with time under a shear protocol).
@@ -83,8 +88,8 @@ class GlobalDiagnostics final : public EventObserver<2> {
   SystemParams params_;
   ShearFrame frame_;
   FieldGrid grid_;  // coarse-graining cells of T̄ and κ
-  double impulse_sum_ = 0.0;     // Σ J over the interval
-  double impulse_xy_sum_ = 0.0;  // Σ J k_x k_y
+  double impulse_sum_ = 0.0;     // Σ J σ_ij/σ over the interval (Σ J when monodisperse)
+  double impulse_xy_sum_ = 0.0;  // Σ J σ_ij/σ k_x k_y
   double interval_start_ = 0.0;
   std::int64_t interval_collisions_ = 0;
 };

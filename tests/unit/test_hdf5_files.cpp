@@ -34,7 +34,7 @@ fs::path scratch(const std::string& name) {
 SnapshotMetadata metadata(double tc_duration = 0.0) {
   SnapshotMetadata m;
   m.system = SystemParams{kParticles, 0.01, 1.0, 2.0, 0.8, 0.0, tc_duration, {}};
-  m.area_fraction = 0.1;
+  m.packing_fraction = 0.1;
   m.boundary = "periodic";
   m.seed = 7;
   m.version = "test";

@@ -77,7 +77,7 @@ struct EquilibriumRun {
     Simulation<2> sim = make_simulation(params, 21);
     sim.run(kInf, collisions_for(params, 20.0));
     const ShearFrame frame{1.0, 1.0, 0.0};
-    GlobalDiagnostics diagnostics(params, 10, 10);
+    GlobalDiagnostics<2> diagnostics(params, 10, 10);
     CollisionalStressField stress(grid, params.diameter);
     ImpactParameterStatistics impacts(params.diameter, 1000, params.particles, {}, nullptr);
     FreePathSettings settings;

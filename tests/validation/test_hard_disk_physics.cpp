@@ -30,7 +30,7 @@ TEST_P(ElasticEquilibrium, PressureCollisionRateAndFlatness) {
   const SystemParams p = make_system(3000, nu, 1.0);
   Simulation<2> sim = make_simulation(p, 11);
   sim.run(kInf, collisions_for(p, 20.0));  // melt the lattice, forget the initial state
-  GlobalDiagnostics diagnostics(p, 12, 12);
+  GlobalDiagnostics<2> diagnostics(p, 12, 12);
   sim.add_observer(&diagnostics);
   diagnostics.restart_interval(sim.time(), sim.collisions());
   const std::int64_t start = sim.collisions();
@@ -105,7 +105,7 @@ TEST(FreeCooling, LogTemperatureSlopePerCollision) {
   Simulation<2> sim = make_simulation(p, 21);
   sim.run(kInf, collisions_for(p, 5.0));
   sim.start_production(e);
-  GlobalDiagnostics diagnostics(p, 14, 14);
+  GlobalDiagnostics<2> diagnostics(p, 14, 14);
   std::vector<double> c, log_t;
   for (int k = 1; k <= 10; ++k) {
     sim.run(kInf, collisions_for(p, 0.5 * k));
@@ -139,7 +139,7 @@ TEST(LeesEdwards, LinearProfileAndSteadyTemperature) {
   sim.run(kInf, collisions_for(p, 2.0));
   sim.start_production(e);
   sim.run(kInf, collisions_for(p, 40.0));  // reach the steady state
-  GlobalDiagnostics diagnostics(p, 14, 14);
+  GlobalDiagnostics<2> diagnostics(p, 14, 14);
   constexpr int kBins = 10;
   std::vector<double> sum(kBins), count(kBins);
   double temperature = 0.0;

@@ -36,7 +36,7 @@ TEST(ShearTemperature, ExactLinearShearHasNoTemperature) {
       s.vy.push_back(0.0);
     }
   }
-  GlobalDiagnostics diagnostics(p, n, n);
+  GlobalDiagnostics<2> diagnostics(p, n, n);
   const DiagnosticsSample d = diagnostics.sample(s, 1.0, 0, p.shear_velocity, 0.0);
   const double h = 1.0 / n, gamma = frame.shear_rate();
   EXPECT_NEAR(d.temperature, 0.0, 1e-24);
@@ -49,7 +49,7 @@ TEST(ShearTemperature, PeriodicColumnsAreEqual) {
   const SystemParams p = make_system(1000, 0.05, 0.8);
   Simulation<2> sim = make_simulation(p, 4);
   sim.start_production(p.restitution);
-  GlobalDiagnostics diagnostics(p, 7, 7);
+  GlobalDiagnostics<2> diagnostics(p, 7, 7);
   for (int c = 1; c <= 5; ++c) {
     sim.run(kInf, collisions_for(p, c));
     const DiagnosticsSample d = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
@@ -118,7 +118,7 @@ TEST(ShearTemperature, ProfileSubtractedTemperatureIsTheGlobalOneMinusCellVeloci
     std::vector<double> honest, thesis, closure, excess, occupancy_factor;
   };
   std::vector<Series> series(std::size(grids));
-  std::vector<GlobalDiagnostics> diagnostics;
+  std::vector<GlobalDiagnostics<2>> diagnostics;
   for (int g : grids) diagnostics.emplace_back(p, g, g);
   std::vector<double> global;
   constexpr int kSamples = 60;
