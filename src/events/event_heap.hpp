@@ -1,5 +1,7 @@
 // Indexed binary min-heap of one event time per particle: O(log N) update of any particle's
-// time, O(1) access to the earliest.  Times are relative to the engine's clock base.
+// time, O(1) access to the earliest.  Times are relative to the engine's clock base.  Times and
+// particle ids are two arrays, not one array of {time, id} records: 12 bytes per entry instead of
+// 16 (padding), and the times a sift compares sit twice as densely in the cache.
 #pragma once
 
 #include <cstdint>
@@ -16,9 +18,9 @@ class EventHeap {
   void reset(std::int32_t particles);
   // Set a particle's event time, restoring heap order.
   void update(std::int32_t particle, double time);
-  std::int32_t top() const { return heap_[0].particle; }
-  double top_time() const { return heap_[0].time; }
-  double time_of(std::int32_t particle) const { return heap_[slot_[static_cast<std::size_t>(particle)]].time; }
+  std::int32_t top() const { return particle_[0]; }
+  double top_time() const { return time_[0]; }
+  double time_of(std::int32_t particle) const { return time_[slot_[static_cast<std::size_t>(particle)]]; }
   // Heap order holds and every particle's slot points at its entry (GRANULE_PARANOID checks).
   bool is_consistent() const;
   // Subtract the same amount from every time (clock re-basing); order is preserved.
@@ -27,23 +29,21 @@ class EventHeap {
   void save(StateArchive& archive, const std::string& prefix) const;
   void restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles);
   std::size_t bytes() const {
-    return heap_.capacity() * sizeof(Entry) + slot_.capacity() * sizeof(std::uint32_t);
+    return time_.capacity() * sizeof(double) + (particle_.capacity() + slot_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
-  struct Entry {
-    double time;
-    std::int32_t particle;
-  };
   void sift_up(std::uint32_t slot);
   void sift_down(std::uint32_t slot);
-  void place(std::uint32_t slot, Entry entry) {
-    heap_[slot] = entry;
-    slot_[static_cast<std::size_t>(entry.particle)] = slot;
+  void place(std::uint32_t slot, double time, std::int32_t particle) {
+    time_[slot] = time;
+    particle_[slot] = particle;
+    slot_[static_cast<std::size_t>(particle)] = slot;
   }
 
-  std::vector<Entry> heap_;
-  std::vector<std::uint32_t> slot_;
+  std::vector<double> time_;           // heap order
+  std::vector<std::int32_t> particle_;  // the particle of each heap entry
+  std::vector<std::uint32_t> slot_;     // the heap entry of each particle
 };
 
 }  // namespace granule
