@@ -5,7 +5,9 @@ every time window against t.  Free paths before collision, of one --window group
 part L(l_max, α) with the fitted angular factor of (3.24) and its α₀ (Fig 3.32); (E) L(l, α) against
 l at fixed α with (3.24), erf(√(l/l̄)) times the angular factor (Fig 3.33); (F) the magnitude
 distribution 𝒫(l) on log axes beside the matched form (3.36) and the exponential, with their
-Kolmogorov distances.  One row of three 5 × 4.5 inch panels per statistic in the file."""
+Kolmogorov distances.  One row of three 5 × 4.5 inch panels per statistic in the file.
+A 3D file (spheres) has (b/σ)² for b/σ, uniform under molecular chaos, and cos θ (θ from the flow
+axis x) for α: panels (D) and (E) compare with isotropy, (1 + cos θ)/2, for there is no (3.24) to fit."""
 import math
 
 import numpy as np
@@ -16,6 +18,7 @@ from _common import angle_ticks, fail, figure, legend, open_h5, parser, require_
 KIND = "collisions"
 PANEL_WIDTH, PANEL_HEIGHT = 5.0, 4.5
 FIXED_ANGLES = [("π/2", 0.5 * math.pi), ("π", math.pi), ("2π", 2.0 * math.pi)]  # the α of panel (E)
+FIXED_COSINES = [("−½", -0.5), ("0", 0.0), ("1", 1.0)]  # the cos θ of panel (E) in 3D
 
 
 def numbered(group, prefix):
@@ -46,8 +49,14 @@ def angular_part(alpha, alpha0):
     return (f(alpha) - f(0.0)) / (f(2.0 * math.pi) - f(0.0))
 
 
-def draw_impact_parameters(fig, axes, g):
+def isotropic_part(cos_theta):
+    """The isotropic law of cos θ in 3D, cumulative from −1: (1 + cos θ)/2."""
+    return 0.5 * (1.0 + cos_theta)
+
+
+def draw_impact_parameters(fig, axes, g, three_d):
     edges = g["bin_edges"][:]
+    b = "(b/σ)²" if three_d else "b/σ"
     width = edges[1] - edges[0]
     groups = ["total"] + numbered(g, "density_window")
     drawn = {}
@@ -75,21 +84,21 @@ def draw_impact_parameters(fig, axes, g):
         # so each band spans from its start to the next window's start.
         rows = np.append(t_start, t_end[-1])
         image = ax_windows.pcolormesh(edges, rows, per_window, cmap="viridis", vmin=0.0)
-        fig.colorbar(image, ax=ax_windows, shrink=0.85, label="β(b/σ)")
+        fig.colorbar(image, ax=ax_windows, shrink=0.85, label=f"β({b})")
         ax_windows.set_ylabel("t")
     else:
         ax_windows.text(0.5, 0.5, "no complete time window", ha="center", transform=ax_windows.transAxes)
     ax_beta.axhline(1.0, color="grey", ls="--", lw=0.8, label="uniform (elastic, isotropic)")
-    ax_beta.set(xlim=(0, 1), ylim=(0, None), xlabel="b/σ", ylabel="β(b/σ)", title="(A) impact parameters β (3.20)")
+    ax_beta.set(xlim=(0, 1), ylim=(0, None), xlabel=b, ylabel=f"β({b})", title="(A) impact parameters β (3.20)")
     ax_cumulative.axhline(0.0, color="grey", lw=0.8)
-    ax_cumulative.set(xlim=(0, 1), xlabel="b/σ", ylabel="B(b) − b/σ", title="(B) cumulative minus uniform (3.21)")
-    ax_windows.set(xlabel="b/σ", title=f"(C) β per window of {int(g.attrs['window_collisions'])} collisions")
+    ax_cumulative.set(xlim=(0, 1), xlabel=b, ylabel=f"B(b) − {b}", title="(B) cumulative minus uniform (3.21)")
+    ax_windows.set(xlabel=b, title=f"(C) β per window of {int(g.attrs['window_collisions'])} collisions")
     for ax in (ax_beta, ax_cumulative):
         legend(ax)
     return {"bin_edges": edges, "curves": drawn, "windows": {"t_start": t_start, "t_end": t_end, "beta": per_window}}
 
 
-def draw_free_paths(axes, fp, name):
+def draw_free_paths(axes, fp, name, three_d):
     g = fp[name]
     l_edges, a_edges = fp["length_edges"][:], fp["angle_edges"][:]
     attrs = {key: float(value) for key, value in g.attrs.items() if key not in ("density_low", "density_high", "speed_low", "speed_high")}
@@ -101,27 +110,40 @@ def draw_free_paths(axes, fp, name):
         return {"window": name, "label": label, **attrs}
     alpha0, lbar = attrs["alpha0"], attrs["lbar"]
 
-    # (D) Fig 3.32: the measured angular part against the fitted factor of (3.24).
-    fine_alpha = np.linspace(0.0, 2.0 * math.pi, 721)
-    model_alpha = angular_part(fine_alpha, alpha0)
-    ax_angle.plot(a_edges[1:], g["angular_cumulative"][:], "o", ms=3, label="L(l_max, α) / L(l_max, 2π)")
-    ax_angle.plot(fine_alpha, model_alpha, "-", lw=1.2, label=f"(3.24): α₀ = {alpha0:.3g} (rms {attrs['alpha0_rms']:.2g})")
-    ax_angle.plot(fine_alpha, fine_alpha / (2.0 * math.pi), ":", color="grey", lw=1, label="isotropic α/2π")
-    angle_ticks(ax_angle)
-    ax_angle.set(xlabel="α (angle of the path from +x)", ylabel="angular part", title="(D) L(l_max, α) (3.23) and (3.24)")
+    # (D) Fig 3.32: the measured angular part against the fitted factor of (3.24) (2D) or isotropy (3D).
+    if three_d:
+        fine_alpha = np.linspace(-1.0, 1.0, 401)
+        model_alpha = isotropic_part(fine_alpha)
+        ax_angle.plot(a_edges[1:], g["angular_cumulative"][:], "o", ms=3, label="L(l_max, cos θ) / L(l_max, 1)")
+        ax_angle.plot(fine_alpha, model_alpha, ":", color="grey", lw=1.2,
+                      label=f"isotropic (1 + cos θ)/2: KS {attrs['ks_isotropic']:.3g}")
+        ax_angle.set(xlabel="cos θ (θ the angle of the path from +x)", ylabel="angular part",
+                     title="(D) L(l_max, cos θ) (3.23) and isotropy")
+    else:
+        fine_alpha = np.linspace(0.0, 2.0 * math.pi, 721)
+        model_alpha = angular_part(fine_alpha, alpha0)
+        ax_angle.plot(a_edges[1:], g["angular_cumulative"][:], "o", ms=3, label="L(l_max, α) / L(l_max, 2π)")
+        ax_angle.plot(fine_alpha, model_alpha, "-", lw=1.2, label=f"(3.24): α₀ = {alpha0:.3g} (rms {attrs['alpha0_rms']:.2g})")
+        ax_angle.plot(fine_alpha, fine_alpha / (2.0 * math.pi), ":", color="grey", lw=1, label="isotropic α/2π")
+        angle_ticks(ax_angle)
+        ax_angle.set(xlabel="α (angle of the path from +x)", ylabel="angular part", title="(D) L(l_max, α) (3.23) and (3.24)")
 
     # (E) Fig 3.33: L(l, α) at fixed α against the factorised form (3.24).
     fine_l = np.linspace(0.0, l_edges[-1], 400)
     cumulative = g["cumulative"][:]
     radial = []
-    for symbol, alpha in FIXED_ANGLES:
+    symbol_of_angle = "cos θ" if three_d else "α"
+    for symbol, alpha in FIXED_COSINES if three_d else FIXED_ANGLES:
         a = int(np.argmin(np.abs(a_edges[1:] - alpha)))
-        model = angular_part(a_edges[a + 1], alpha0) * erf(np.sqrt(fine_l / lbar))
-        points = ax_length.plot(l_edges[1:], cumulative[:, a], "o", ms=2, label=f"α = {symbol}")
+        angular = isotropic_part(a_edges[a + 1]) if three_d else angular_part(a_edges[a + 1], alpha0)
+        model = angular * erf(np.sqrt(fine_l / lbar))
+        points = ax_length.plot(l_edges[1:], cumulative[:, a], "o", ms=2, label=f"{symbol_of_angle} = {symbol}")
         ax_length.plot(fine_l, model, "-", lw=1, color=points[0].get_color())
         radial.append({"alpha": a_edges[a + 1], "l": l_edges[1:], "measured": cumulative[:, a], "model_l": fine_l, "model": model})
-    ax_length.plot([], [], "k-", lw=1, label=f"(3.24): angular part × erf(√(l/l̄)), l̄ = {lbar:.3g}")
-    ax_length.set(xlabel="l", ylabel="L(l, α)", ylim=(0, None), title="(E) L(l, α) at fixed α (3.23)")
+    angular_name = "isotropic angular part" if three_d else "(3.24): angular part"
+    ax_length.plot([], [], "k-", lw=1, label=f"{angular_name} × erf(√(l/l̄)), l̄ = {lbar:.3g}")
+    ax_length.set(xlabel="l", ylabel=f"L(l, {symbol_of_angle})", ylim=(0, None),
+                  title=f"(E) L(l, {symbol_of_angle}) at fixed {symbol_of_angle} (3.23)")
 
     # (F) 𝒫(l), log axes: (3.36) rises as 1/√l at short paths where the exponential stays flat.
     centres = 0.5 * (l_edges[1:] + l_edges[:-1])
@@ -157,14 +179,15 @@ def main():
                 fail(KIND, f"--window {a.window} is not a free-path group of {a.input} (allowed: {', '.join(windows)})")
         elif a.window != "total":
             fail(KIND, f"--window {a.window}: {a.input} has no free paths (allowed: total)")
+        three_d = int(f.attrs.get("dimension", 2)) == 3
         fig = figure(3 * PANEL_WIDTH, len(rows) * PANEL_HEIGHT)
         data = {}
         for row, group in enumerate(rows):
             axes = [fig.add_subplot(len(rows), 3, 3 * row + column + 1) for column in range(3)]
             if group == "impact_parameters":
-                data[group] = draw_impact_parameters(fig, axes, f[group])
+                data[group] = draw_impact_parameters(fig, axes, f[group], three_d)
             else:
-                data[group] = draw_free_paths(axes, f[group], a.window)
+                data[group] = draw_free_paths(axes, f[group], a.window, three_d)
         free_paths = f"; free paths: {data['free_paths']['label']}" if "free_paths" in data else ""
         fig.suptitle(f"N = {int(f.attrs['particles'])}, ẽ = {float(f.attrs['restitution']):g}, {text(f.attrs['boundary'])}; "
                      f"collisions over c ∈ [{float(f.attrs['from_c']):.4g}, {float(f.attrs['to_c']):.4g}], "

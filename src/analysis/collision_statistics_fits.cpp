@@ -60,7 +60,8 @@ double free_path_angular_cumulative(double alpha, double alpha0) {
   return (f(alpha) - f(0.0)) / (f(2.0 * pi) - f(0.0));
 }
 
-FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& lengths, const UniformBins& angles) {
+FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& lengths, const UniformBins& angles,
+                                     int dimension) {
   FreePathSummary s;
   s.paths = h.paths;
   const auto nl = static_cast<std::size_t>(lengths.bins), na = static_cast<std::size_t>(angles.bins);
@@ -69,7 +70,7 @@ FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& 
     // arrays of the histogram's shape, so that writers never read past an empty vector.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     s.mean_length = s.mean_speed = s.l0_matched = s.lambda_exponential = nan;
-    s.lbar = s.lbar_rms = s.alpha0 = s.alpha0_rms = s.ks_matched = s.ks_exponential = nan;
+    s.lbar = s.lbar_rms = s.alpha0 = s.alpha0_rms = s.ks_isotropic = s.ks_matched = s.ks_exponential = nan;
     s.cumulative.assign(nl * na, nan);
     for (auto* v : {&s.magnitude_density, &s.matched_density, &s.exponential_density, &s.length_cumulative}) v->assign(nl, nan);
     for (auto* v : {&s.angular_cumulative, &s.angular_fit}) v->assign(na, nan);
@@ -128,12 +129,22 @@ FreePathSummary summarize_free_paths(const PathHistogram& h, const UniformBins& 
   // range (10⁴) is the isotropic limit of (3.24), at the lower end (10⁻⁴) paths exactly along x.
   const double below_max = s.length_cumulative.back();
   if (!(below_max > 0.0)) {
-    s.alpha0 = s.alpha0_rms = std::numeric_limits<double>::quiet_NaN();
+    s.alpha0 = s.alpha0_rms = s.ks_isotropic = std::numeric_limits<double>::quiet_NaN();
     s.angular_cumulative.assign(na, s.alpha0);
     s.angular_fit.assign(na, s.alpha0);
     return s;
   }
   for (std::size_t a = 0; a < na; ++a) s.angular_cumulative.push_back(s.cumulative[(nl - 1) * na + a] / below_max);
+  for (int a = 0; a < angles.bins; ++a) {
+    const double isotropic = static_cast<double>(a + 1) / angles.bins;  // the uniform law at the upper edge
+    s.ks_isotropic = std::max(s.ks_isotropic, std::abs(s.angular_cumulative[static_cast<std::size_t>(a)] - isotropic));
+  }
+  if (dimension == 3) {
+    // No thesis form to fit for spheres: the isotropic law is the reference.
+    s.alpha0 = s.alpha0_rms = std::numeric_limits<double>::quiet_NaN();
+    for (int a = 0; a < angles.bins; ++a) s.angular_fit.push_back(static_cast<double>(a + 1) / angles.bins);
+    return s;
+  }
   const auto angular_error = [&](double alpha0) {
     double sum = 0.0;
     for (int a = 0; a < angles.bins; ++a) {

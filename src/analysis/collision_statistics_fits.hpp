@@ -7,6 +7,10 @@
 // whose cumulative is exactly the radial factor erf(√(l/l̄)) of (3.24) with l̄ = l₀.  Its maximum-
 // likelihood l₀ is 2⟨l⟩; the exponential's is ⟨l⟩.  Both are compared with the data by the
 // Kolmogorov distance of the cumulative forms at the bin edges.
+//
+// In 3D (spheres) the impact-parameter variable is (b/σ)², uniform under molecular chaos, so the
+// same B − uniform applies; the free-path angle is cos θ (free_paths.hpp), whose isotropic law is
+// uniform on [−1, 1]: no α₀ is fitted, the angular cumulative is compared with (1 + cos θ)/2.
 #pragma once
 
 #include <vector>
@@ -33,6 +37,9 @@ struct FreePathSummary {
   // [10⁻⁴, 10⁴] (10⁴: isotropic); NaN when no path is shorter than l_max.
   double alpha0 = 0.0;
   double alpha0_rms = 0.0;  // rms residual of that fit
+  // Kolmogorov distance of L(l_max, angle), normalised, from the isotropic law: α/2π in 2D,
+  // (1 + cos θ)/2 in 3D; NaN when no path is shorter than l_max.
+  double ks_isotropic = 0.0;
   // (3.24), radial part: l̄ fitted to L(l, 2π) = erf(√(l/l̄)) by least squares (the thesis's way);
   // NaN when the best l̄ lies at an end of the searched range [10⁻³, 10³] ⟨l⟩ (no scale fits).
   double lbar = 0.0;
@@ -46,12 +53,13 @@ struct FreePathSummary {
   std::vector<double> exponential_density;  // exp(−l/λ)/λ, averaged over each bin
   std::vector<double> length_cumulative;    // L(l, 2π) at the upper length-bin edges
   std::vector<double> angular_cumulative;   // L(l_max, α) at the upper angle-bin edges, normalised
-  std::vector<double> angular_fit;          // the fitted angular part of (3.24) there
+  std::vector<double> angular_fit;          // 2D: the fitted angular part of (3.24) there; 3D: (1 + cos θ)/2
   std::vector<double> cumulative;           // L(l, α) of (3.23): length_bins × angle_bins, upper edges
 };
 
+// `dimension` 2: the thesis's (3.24) fit of α₀; 3: α₀ and its rms are NaN (header).
 FreePathSummary summarize_free_paths(const PathHistogram& histogram, const UniformBins& length_bins,
-                                     const UniformBins& angle_bins);
+                                     const UniformBins& angle_bins, int dimension = 2);
 
 // The angular part of (3.24), normalised to run from 0 at α = 0 to 1 at α = 2π.
 double free_path_angular_cumulative(double alpha, double alpha0);

@@ -1,83 +1,123 @@
 #include "analysis/collisional_stress.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace granule {
 
 namespace {
 
-// The per-cell sums with their checkpoint names, in one list.
+// The per-cell sums with their checkpoint names, in one list: the 2D set, then the z components in 3D.
 template <typename Sums>
-auto sum_arrays(Sums& s) {
-  return std::array{std::pair{"sum_xx", &s.xx},         std::pair{"sum_xy", &s.xy},
-                    std::pair{"sum_yy", &s.yy},         std::pair{"sum_energy_x", &s.energy_x},
-                    std::pair{"sum_energy_y", &s.energy_y}, std::pair{"count", &s.collisions}};
+auto sum_arrays(Sums& s, int dimension) {
+  std::vector<std::pair<const char*, decltype(&s.xx)>> arrays{
+      {"sum_xx", &s.xx},           {"sum_xy", &s.xy},           {"sum_yy", &s.yy},
+      {"sum_energy_x", &s.energy_x}, {"sum_energy_y", &s.energy_y}, {"count", &s.collisions}};
+  if (dimension == 3) {
+    arrays.insert(arrays.end(), {{"sum_xz", &s.xz}, {"sum_yz", &s.yz}, {"sum_zz", &s.zz}, {"sum_energy_z", &s.energy_z}});
+  }
+  return arrays;
+}
+
+template <int D>
+std::size_t cell_of(const FieldGrid& grid, const Vec<D>& p) {
+  if constexpr (D == 2) {
+    return grid.index(p.x, p.y);
+  } else {
+    return grid.index(p.x, p.y, p.z);
+  }
 }
 
 }  // namespace
 
-Vec2 pair_velocity_at_contact(const CollisionRecord<2>& r, double diameter, double length_y) {
-  // Before mapping into the box the contact point lies σ/2 from disk 1 along k̂; the recorded
-  // one is a box height away from there when it was mapped to disk 2's side.
+std::vector<double>& CollisionalStress::component(int a, int b) {
+  if (a > b) std::swap(a, b);
+  if (b == 2) return a == 0 ? xz : (a == 1 ? yz : zz);
+  return a == 0 ? (b == 0 ? xx : xy) : yy;
+}
+
+double CollisionalStress::pressure(std::size_t c) const {
+  return zz.empty() ? 0.5 * (xx[c] + yy[c]) : (xx[c] + yy[c] + zz[c]) / 3.0;
+}
+
+template <int D>
+Vec<D> pair_velocity_at_contact(const CollisionRecord<D>& r, double diameter, double length_y) {
+  // Before mapping into the box the contact point lies σ/2 from particle 1 along k̂; the recorded
+  // one is a box height away from there when it was mapped to particle 2's side.
   const double unmapped_y = r.first_position.y + 0.5 * diameter * r.contact_normal.y;
   const bool on_second_side = std::abs(unmapped_y - r.contact_point.y) > 0.5 * length_y;
-  const Vec2 half_relative = 0.5 * r.relative_velocity;  // v₂₁/2 = (v₁ − v₂)/2
+  const Vec<D> half_relative = 0.5 * r.relative_velocity;  // v₂₁/2 = (v₁ − v₂)/2
   return on_second_side ? r.second_velocity_before + half_relative : r.first_velocity_before - half_relative;
 }
 
-CollisionalStressField::CollisionalStressField(const FieldGrid& grid, double diameter) : grid_(grid), diameter_(diameter) {
-  for (const auto& [name, values] : sum_arrays(sums_)) values->assign(grid.cells(), 0.0);
+template <int D>
+CollisionalStressField<D>::CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter)
+    : grid_(grid), diameter_(diameter) {
+  for (const auto& [name, values] : sum_arrays(sums_, D)) values->assign(grid.cells(), 0.0);
 }
 
-void CollisionalStressField::on_collision(const CollisionRecord<2>& r) {
-  const std::size_t c = grid_.index(r.contact_point.x, r.contact_point.y);
-  const double j = r.impulse;
-  const Vec2 k = r.contact_normal;
-  const Vec2 s = pair_velocity_at_contact(r, diameter_, grid_.length_y);
-  const double carried = j * (k.x * s.x + k.y * s.y);  // J k̂·s
-  sums_.xx[c] += j * k.x * k.x;
-  sums_.xy[c] += j * k.x * k.y;
-  sums_.yy[c] += j * k.y * k.y;
-  sums_.energy_x[c] += carried * k.x;
-  sums_.energy_y[c] += carried * k.y;
+template <int D>
+void CollisionalStressField<D>::on_collision(const CollisionRecord<D>& r) {
+  const std::size_t c = cell_of(grid_, r.contact_point);
+  // σ_ij J, in units of the monodisperse σ (which the interval's scale multiplies in).
+  const double j = diameter_ ? r.impulse : r.contact_distance * r.impulse;
+  const Vec<D> k = r.contact_normal;
+  const Vec<D> s = pair_velocity_at_contact(r, diameter_.value_or(r.contact_distance), grid_.length_y);
+  double along = dot(k, s);  // k̂·s, plus the energy the unequal masses carry across (header)
+  if (r.first_mass != r.second_mass) along += 0.25 * r.impulse * (1.0 / r.second_mass - 1.0 / r.first_mass);
+  const double carried = j * along;
+  for (int a = 0; a < D; ++a) {
+    for (int b = a; b < D; ++b) sums_.component(a, b)[c] += j * k[a] * k[b];
+    sums_.energy(a)[c] += carried * k[a];
+  }
   sums_.collisions[c] += 1.0;
 }
 
-void CollisionalStressField::restart(double t) {
+template <int D>
+void CollisionalStressField<D>::restart(double t) {
   start_ = t;
-  for (const auto& [name, values] : sum_arrays(sums_)) std::fill(values->begin(), values->end(), 0.0);
+  for (const auto& [name, values] : sum_arrays(sums_, D)) std::fill(values->begin(), values->end(), 0.0);
 }
 
-CollisionalStress CollisionalStressField::stress(double t) const {
+template <int D>
+CollisionalStress CollisionalStressField<D>::stress(double t) const {
   CollisionalStress out = sums_;
   out.interval = t - start_;
-  const double scale = out.interval > 0.0 ? diameter_ / (grid_.cell_area() * out.interval) : 0.0;
-  for (auto* v : {&out.xx, &out.xy, &out.yy, &out.energy_x, &out.energy_y}) {
-    for (double& x : *v) x *= scale;
+  const double scale = out.interval > 0.0 ? diameter_.value_or(1.0) / (grid_.cell_volume() * out.interval) : 0.0;
+  for (const auto& [name, values] : sum_arrays(out, D)) {
+    if (values == &out.collisions) continue;
+    for (double& x : *values) x *= scale;
   }
   return out;
 }
 
-void CollisionalStressField::save(StateArchive& archive, const std::string& prefix) const {
+template <int D>
+void CollisionalStressField<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "start", start_);
-  for (const auto& [name, values] : sum_arrays(sums_)) archive.put(prefix + name, *values);
+  for (const auto& [name, values] : sum_arrays(sums_, D)) archive.put(prefix + name, *values);
 }
 
-void CollisionalStressField::restore(const StateArchive& archive, const std::string& prefix) {
+template <int D>
+void CollisionalStressField<D>::restore(const StateArchive& archive, const std::string& prefix) {
   start_ = archive.scalar(prefix + "start");
-  for (const auto& [name, values] : sum_arrays(sums_)) *values = archive.get_sized<double>(prefix + name, grid_.cells());
+  for (const auto& [name, values] : sum_arrays(sums_, D)) *values = archive.get_sized<double>(prefix + name, grid_.cells());
 }
 
 HeatFlux collisional_heat_flux(const CollisionalStress& s, const std::vector<double>& reference_x,
-                               const std::vector<double>& reference_y) {
-  HeatFlux q{s.energy_x, s.energy_y};
-  for (std::size_t c = 0; c < q.x.size(); ++c) {
-    // σ/(V t) Σ J k̂ k̂·(s − V) = σ/(V t) E − τ^(c)·V.
-    q.x[c] -= s.xx[c] * reference_x[c] + s.xy[c] * reference_y[c];
-    q.y[c] -= s.xy[c] * reference_x[c] + s.yy[c] * reference_y[c];
+                               const std::vector<double>& reference_y, const std::vector<double>& reference_z) {
+  const int d = s.zz.empty() ? 2 : 3;
+  const std::vector<const std::vector<double>*> reference{&reference_x, &reference_y, &reference_z};
+  HeatFlux q{s.energy_x, s.energy_y, s.energy_z};
+  for (int a = 0; a < d; ++a) {
+    std::vector<double>& qa = q.component(a);
+    for (std::size_t c = 0; c < qa.size(); ++c) {
+      // 1/(V t) Σ σ_ij J k̂ k̂·(s − V) = E/(V t) − τ^(c)·V.
+      double transported = s.component(a, 0)[c] * (*reference[0])[c];
+      for (int b = 1; b < d; ++b) transported += s.component(a, b)[c] * (*reference[static_cast<std::size_t>(b)])[c];
+      qa[c] -= transported;
+    }
   }
   return q;
 }
@@ -88,10 +128,16 @@ HeatFlux collisional_heat_flux(const CollisionalStress& stress, const CellFields
   std::vector<double> reference_x = average.velocity_x;
   if (shear_profile_subtracted) {
     for (std::size_t c = 0; c < g.cells(); ++c) {
-      reference_x[c] += frame.mean_flow(g.center_y(static_cast<int>(c / static_cast<std::size_t>(g.nx))));
+      const auto row = static_cast<int>((c / static_cast<std::size_t>(g.nx)) % static_cast<std::size_t>(g.ny));
+      reference_x[c] += frame.mean_flow(g.center_y(row));
     }
   }
-  return collisional_heat_flux(stress, reference_x, average.velocity_y);
+  return collisional_heat_flux(stress, reference_x, average.velocity_y, average.velocity_z);
 }
+
+template class CollisionalStressField<2>;
+template class CollisionalStressField<3>;
+template Vec<2> pair_velocity_at_contact(const CollisionRecord<2>&, double, double);
+template Vec<3> pair_velocity_at_contact(const CollisionRecord<3>&, double, double);
 
 }  // namespace granule

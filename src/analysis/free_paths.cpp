@@ -34,36 +34,53 @@ void add(PathHistogram& h, int length_bin, int angle_bin, int angle_bins, double
 
 }  // namespace
 
-FreePathStatistics::FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density)
+UniformBins free_path_angle_bins(int dimension, int bins) {
+  return dimension == 3 ? UniformBins{-1.0, 1.0, bins} : UniformBins{0.0, 2.0 * std::numbers::pi, bins};
+}
+
+template <int D>
+FreePathStatistics<D>::FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density)
     : settings_(std::move(settings)),
       length_{0.0, settings_.max_length, settings_.length_bins},
-      angle_{0.0, 2.0 * std::numbers::pi, settings_.angle_bins},
+      angle_(free_path_angle_bins(D, settings_.angle_bins)),
       density_(density),
-      last_(static_cast<std::size_t>(particles), LastCollision{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}),
+      last_(static_cast<std::size_t>(particles), LastCollision{std::numeric_limits<double>::quiet_NaN(), Vec<D>{}}),
       total_(empty_histogram(settings_)),
       by_density_(settings_.density_windows.size(), empty_histogram(settings_)),
       by_speed_(settings_.speed_windows.size(), empty_histogram(settings_)) {}
 
-void FreePathStatistics::on_collision(const CollisionRecord<2>& r) {
+template <int D>
+void FreePathStatistics<D>::on_collision(const CollisionRecord<D>& r) {
   record_path(r.first, r.time, r.contact_point, r.first_velocity_after);
   record_path(r.second, r.time, r.contact_point, r.second_velocity_after);
 }
 
-void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, Vec2 velocity_after) {
-  const auto i = static_cast<std::size_t>(disk);
+template <int D>
+int FreePathStatistics<D>::angle_bin(const Vec<D>& v, double speed) const {
+  if constexpr (D == 2) {
+    double alpha = std::atan2(v.y, v.x);
+    if (alpha < 0.0) alpha += 2.0 * std::numbers::pi;
+    return std::max(0, angle_.bin(alpha));  // α = 2π after rounding: the first bin
+  } else {
+    const double cos_theta = v.x / speed;
+    return cos_theta >= 1.0 ? angle_.bins - 1 : std::max(0, angle_.bin(cos_theta));  // a flight at rest: the first bin
+  }
+}
+
+template <int D>
+void FreePathStatistics<D>::record_path(std::int32_t particle, double time, const Vec<D>& end, const Vec<D>& velocity_after) {
+  const auto i = static_cast<std::size_t>(particle);
   LastCollision& last = last_[i];
   if (recording_ && !std::isnan(last.t)) {
     const double dt = time - last.t;
-    const Vec2 v{last.vx, last.vy};
-    const double speed = std::sqrt(v.x * v.x + v.y * v.y);
+    const Vec<D> v = last.v;
+    const double speed = std::sqrt(norm2(v));
     const double length = speed * dt;
-    double alpha = std::atan2(v.y, v.x);
-    if (alpha < 0.0) alpha += 2.0 * std::numbers::pi;
-    const int a = std::max(0, angle_.bin(alpha));  // α = 2π after rounding: the first bin
+    const int a = angle_bin(v, speed);
     const int l = length_.bin(length);
     add(total_, l, a, settings_.angle_bins, length, speed);
     if (density_ != nullptr) {
-      const double rho = density_->at(end.x, end.y);
+      const double rho = density_->at(end);
       for (std::size_t w = 0; w < by_density_.size(); ++w) {
         if (settings_.density_windows[w].contains(rho)) add(by_density_[w], l, a, settings_.angle_bins, length, speed);
       }
@@ -72,7 +89,7 @@ void FreePathStatistics::record_path(std::int32_t disk, double time, Vec2 end, V
       if (settings_.speed_windows[w].contains(speed)) add(by_speed_[w], l, a, settings_.angle_bins, length, speed);
     }
   }
-  last = {time, velocity_after.x, velocity_after.y};
+  last = {time, velocity_after};
 }
 
 namespace {
@@ -112,29 +129,40 @@ void restore_histograms(const StateArchive& archive, const std::string& prefix, 
 }
 }  // namespace
 
-void FreePathStatistics::save(StateArchive& archive, const std::string& prefix) const {
+// The name of the saved last collisions: t and the velocity after, per particle.
+constexpr const char* kLastCollisionName[] = {"", "", "last_collision_t_vx_vy", "last_collision_t_vx_vy_vz"};
+
+template <int D>
+void FreePathStatistics<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_integer(prefix + "recording", recording_ ? 1 : 0);
-  std::vector<double> last(3 * last_.size());
-  for (std::size_t i = 0; i < last_.size(); ++i) {
-    last[3 * i] = last_[i].t;
-    last[3 * i + 1] = last_[i].vx;
-    last[3 * i + 2] = last_[i].vy;
+  std::vector<double> last;
+  last.reserve((D + 1) * last_.size());
+  for (const LastCollision& c : last_) {
+    last.push_back(c.t);
+    for (int a = 0; a < D; ++a) last.push_back(c.v[a]);
   }
-  archive.put(prefix + "last_collision_t_vx_vy", std::move(last));
+  archive.put(prefix + kLastCollisionName[D], std::move(last));
   save_histograms(archive, prefix + "total/", {total_});
   save_histograms(archive, prefix + "by_density/", by_density_);
   save_histograms(archive, prefix + "by_speed/", by_speed_);
 }
 
-void FreePathStatistics::restore(const StateArchive& archive, const std::string& prefix) {
+template <int D>
+void FreePathStatistics<D>::restore(const StateArchive& archive, const std::string& prefix) {
   recording_ = archive.integer(prefix + "recording") != 0;
-  const auto& last = archive.get_sized<double>(prefix + "last_collision_t_vx_vy", 3 * last_.size());
-  for (std::size_t i = 0; i < last_.size(); ++i) last_[i] = {last[3 * i], last[3 * i + 1], last[3 * i + 2]};
+  const auto& last = archive.get_sized<double>(prefix + kLastCollisionName[D], (D + 1) * last_.size());
+  for (std::size_t i = 0; i < last_.size(); ++i) {
+    last_[i].t = last[(D + 1) * i];
+    for (int a = 0; a < D; ++a) last_[i].v[a] = last[(D + 1) * i + 1 + static_cast<std::size_t>(a)];
+  }
   std::vector<PathHistogram> total{total_};
   restore_histograms(archive, prefix + "total/", total);
   total_ = total[0];
   restore_histograms(archive, prefix + "by_density/", by_density_);
   restore_histograms(archive, prefix + "by_speed/", by_speed_);
 }
+
+template class FreePathStatistics<2>;
+template class FreePathStatistics<3>;
 
 }  // namespace granule

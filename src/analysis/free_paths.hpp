@@ -1,10 +1,13 @@
-// Free paths before collision (thesis §3.2.3): at each collision, for each of the two disks, the
-// path vector l since that disk's previous collision, l = v (t − t_prev) with v its velocity
-// after that collision (a straight flight; across a Lees–Edwards boundary the flight continues
-// straight in the image frame it started in), its speed v = |v| and the density ρ of the cell
-// where the path ends.  Accumulated as the histogram of (l, α) — α the angle of l from the
-// streamwise (x) direction in [0, 2π) — that estimates P̃(l, α; v, ρ) of (3.22), globally, inside
-// density windows and inside speed windows, plus exact sums for the mean free path.
+// Free paths before collision (thesis §3.2.3): at each collision, for each of the two particles,
+// the path vector l since that particle's previous collision, l = v (t − t_prev) with v its
+// velocity after that collision (a straight flight; across a Lees–Edwards boundary the flight
+// continues straight in the image frame it started in), its speed v = |v| and the density ρ of the
+// cell where the path ends.  Accumulated as the histogram of (l, angle) that estimates
+// P̃(l, α; v, ρ) of (3.22), globally, inside density windows and inside speed windows, plus exact
+// sums for the mean free path.  The angle is, for disks, α ∈ [0, 2π) of l from the streamwise (x)
+// direction (the thesis's); for spheres, cos θ ∈ [−1, 1] with θ the polar angle of l from the
+// streamwise axis: uniform for isotropic flights (the solid angle is 2π d(cos θ)), so that a
+// streamwise alignment shows as weight near ±1 as α₀ of (3.24) shows it in 2D.
 #pragma once
 
 #include <cstdint>
@@ -41,10 +44,14 @@ struct FreePathSettings {
   std::vector<SpeedWindow> speed_windows;
 };
 
-class FreePathStatistics final : public EventObserver<2> {
+// The angle bins of free paths in d dimensions: α on [0, 2π) (d = 2), cos θ on [−1, 1] (d = 3).
+UniformBins free_path_angle_bins(int dimension, int bins);
+
+template <int D = 2>
+class FreePathStatistics final : public EventObserver<D> {
  public:
   FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density);
-  void on_collision(const CollisionRecord<2>& record) override;
+  void on_collision(const CollisionRecord<D>& record) override;
   // Only paths ending after start() are recorded; paths that began before it are (their start
   // is known from the disks' earlier collisions).
   void start() { recording_ = true; }
@@ -59,16 +66,19 @@ class FreePathStatistics final : public EventObserver<2> {
   void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
-  void record_path(std::int32_t disk, double time, Vec2 end, Vec2 velocity_after);
+  void record_path(std::int32_t particle, double time, const Vec<D>& end, const Vec<D>& velocity_after);
+  // The angle bin of a flight's velocity (α in 2D, cos θ in 3D).
+  int angle_bin(const Vec<D>& velocity, double speed) const;
 
   FreePathSettings settings_;
   UniformBins length_, angle_;
   const LocalDensity* density_;
   bool recording_ = false;
-  // Each disk's last collision: one record per disk so that a collision touches one cache line
-  // per disk.  t is NaN until the disk's first collision is seen.
+  // Each particle's last collision: one record per particle so that a collision touches one
+  // cache line per particle.  t is NaN until the particle's first collision is seen.
   struct LastCollision {
-    double t, vx, vy;
+    double t;
+    Vec<D> v;  // velocity after it
   };
   std::vector<LastCollision> last_;
   PathHistogram total_;

@@ -30,6 +30,38 @@ struct CollisionsOptions {
   std::string out;
 };
 
+// The continuation itself, for disks (D = 2) or spheres (D = 3).
+template <int D>
+int continue_and_measure(const CollisionsOptions& o, const RunConfig& config, const SnapshotRead& snapshot) {
+  const SystemParams& system = config.system;
+  CellGridRequest request{system.length_x, system.length_y, system.diameter, system.particles,
+                          config.lees_edwards, config.particles_per_cell, config.engine_cells};
+  request.dimension = D;
+  request.length_z = system.length_z;
+  const CellGridChoice choice = choose_cell_grid(request);
+  if (!choice.grid) {
+    fmt::print(stderr, "granule analyze collisions: error: {}\n", choice.error);
+    return kExitBadInput;
+  }
+  Simulation<D> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
+  const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
+  std::filesystem::create_directories(out);
+  driver::RunMeasurements<D> measurements(config, out);
+  measurements.start(sim);
+  const std::int64_t target =
+      sim.collisions() + std::llround(o.collisions_per_particle * static_cast<double>(system.particles));
+  while (true) {
+    const StopReason reason = driver::advance_to_next_stop<D>(sim, {&measurements}, {target, driver::kInf});
+    if (sim.collisions() >= target || reason == StopReason::kNoEvents || reason == StopReason::kInelasticCollapse) break;
+  }
+  measurements.after_step(sim, true);
+  const nlohmann::json figures = measurements.finish(sim);
+  write_file_atomically(out + "/summary.json", figures.dump(2) + "\n");
+  fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
+             snapshot.frame.collisions_per_particle, sim.collisions_per_particle(), out);
+  return 0;
+}
+
 int analyze_collisions(const CollisionsOptions& o) {
   const ConfigResult parsed = load_config_file(o.run_dir + "/config.toml", o.overrides);
   if (!parsed.config) {
@@ -46,39 +78,12 @@ int analyze_collisions(const CollisionsOptions& o) {
                o.run_dir, error.what());
     return kExitBadInput;
   }
-  if (system.dimension != 2) {
-    // The impact-parameter, free-path and collisional-stress observers are those of disks.
-    fmt::print(stderr, "granule analyze collisions: error: {} is a 3D run: collision statistics are measured in 2D runs only\n",
-               o.run_dir);
-    return kExitBadInput;
-  }
-  if (snapshot.metadata.system.particles != system.particles || snapshot.metadata.system.diameter != system.diameter) {
+  const SystemParams& theirs = snapshot.metadata.system;
+  if (theirs.dimension != system.dimension || theirs.particles != system.particles || theirs.diameter != system.diameter) {
     fmt::print(stderr, "granule analyze collisions: error: {}/snapshots.h5 does not match its config.toml\n", o.run_dir);
     return kExitBadInput;
   }
-  const CellGridChoice choice = choose_cell_grid({system.length_x, system.length_y, system.diameter, system.particles,
-                                                  config.lees_edwards, config.particles_per_cell, config.engine_cells});
-  if (!choice.grid) {
-    fmt::print(stderr, "granule analyze collisions: error: {}\n", choice.error);
-    return kExitBadInput;
-  }
-  Simulation<2> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
-  const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
-  std::filesystem::create_directories(out);
-  driver::RunMeasurements<2> measurements(config, out);
-  measurements.start(sim);
-  const std::int64_t target =
-      sim.collisions() + std::llround(o.collisions_per_particle * static_cast<double>(system.particles));
-  while (true) {
-    const StopReason reason = driver::advance_to_next_stop<2>(sim, {&measurements}, {target, driver::kInf});
-    if (sim.collisions() >= target || reason == StopReason::kNoEvents || reason == StopReason::kInelasticCollapse) break;
-  }
-  measurements.after_step(sim, true);
-  const nlohmann::json figures = measurements.finish(sim);
-  write_file_atomically(out + "/summary.json", figures.dump(2) + "\n");
-  fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
-             snapshot.frame.collisions_per_particle, sim.collisions_per_particle(), out);
-  return 0;
+  return system.dimension == 3 ? continue_and_measure<3>(o, config, snapshot) : continue_and_measure<2>(o, config, snapshot);
 }
 
 }  // namespace

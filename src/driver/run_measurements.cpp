@@ -34,12 +34,8 @@ void RunMeasurements<D>::set_up(Simulation<D>& sim) {
     fields_schedule_ = own ? Schedule{config_.fields.every_collisions_per_particle, config_.fields.every_time}
                            : Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
     fields_schedule_.start(s.particles);
-    // The collisional stress field and the collision statistics are 2D observers (3D runs refuse
-    // [collisions] in their configuration and write kinetic fields only).
-    if constexpr (D == 2) {
-      collisional_ = std::make_unique<CollisionalStressField>(grid_, s.diameter);
-      sim.add_observer(collisional_.get());
-    }
+    collisional_ = std::make_unique<CollisionalStressField<D>>(grid_, monodisperse_diameter());
+    sim.add_observer(collisional_.get());
     interval_moments_ = std::make_unique<CellMoments>(grid_);
   }
   const CollisionStatisticsConfig& k = config_.collisions;
@@ -48,16 +44,23 @@ void RunMeasurements<D>::set_up(Simulation<D>& sim) {
     statistics_start_ = std::max<std::int64_t>(sim.collisions(), std::llround(k.from_collisions_per_particle * static_cast<double>(s.particles)));
     const std::int64_t window = std::max<std::int64_t>(1, std::llround(k.window_collisions_per_particle * static_cast<double>(s.particles)));
     if (k.impact_parameters) {
-      impacts_ = std::make_unique<ImpactParameterStatistics>(s.diameter, k.impact_bins, window, k.density_windows, density_.get());
+      impacts_ = std::make_unique<ImpactParameterStatistics<D>>(monodisperse_diameter(), k.impact_bins, window,
+                                                                k.density_windows, density_.get());
     }
     if (k.free_paths) {
       // Attached from the start: a path's beginning is the disk's previous collision.
-      paths_ = std::make_unique<FreePathStatistics>(
+      paths_ = std::make_unique<FreePathStatistics<D>>(
           s.particles, FreePathSettings{k.length_bins, k.angle_bins, k.max_length, k.density_windows, k.speed_windows},
           density_.get());
-      if constexpr (D == 2) sim.add_observer(paths_.get());
+      sim.add_observer(paths_.get());
     }
   }
+}
+
+template <int D>
+std::optional<double> RunMeasurements<D>::monodisperse_diameter() const {
+  if (config_.diameters.monodisperse()) return config_.system.diameter;
+  return std::nullopt;
 }
 
 template <int D>
@@ -71,7 +74,7 @@ void RunMeasurements<D>::start(Simulation<D>& sim) {
   set_up(sim);
   if (config_.fields.enabled) {
     fields_schedule_.advance(sim);
-    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", grid_, fields_metadata(), D == 2);
+    fields_writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", grid_, fields_metadata(), true);
     write_fields_frame(sim);
   }
   if (density_) {
@@ -122,9 +125,7 @@ void RunMeasurements<D>::resume(Simulation<D>& sim, const StateArchive& archive,
       windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
       windows_.start(config_.system.particles);
       windows_.restore(archive, prefix + "windows/");
-      if constexpr (D == 2) {
-        if (impacts_) sim.add_observer(impacts_.get());
-      }
+      if (impacts_) sim.add_observer(impacts_.get());
     }
   }
 }
@@ -169,9 +170,7 @@ void RunMeasurements<D>::after_step(Simulation<D>& sim, bool final) {
     statistics_started_ = true;
     statistics_from_t_ = sim.time();
     statistics_from_c_ = sim.collisions_per_particle();
-    if constexpr (D == 2) {
-      if (impacts_) sim.add_observer(impacts_.get());
-    }
+    if (impacts_) sim.add_observer(impacts_.get());
     if (paths_) paths_->start();
     windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
     windows_.start(config_.system.particles, sim.collisions());
@@ -237,20 +236,30 @@ nlohmann::json RunMeasurements<D>::finish(const Simulation<D>& sim) {
   }
   if (!density_) return j;
   const SystemParams& s = config_.system;
-  write_collision_statistics(out_dir_,
-                             {s, config_.lees_edwards ? "lees-edwards" : "periodic", kVersion, statistics_from_t_,
-                              statistics_from_c_, sim.time(), sim.collisions_per_particle(), grid_},
-                             impacts_.get(), paths_.get());
+  write_collision_statistics<D>(out_dir_,
+                                {s, config_.lees_edwards ? "lees-edwards" : "periodic", kVersion, statistics_from_t_,
+                                 statistics_from_c_, sim.time(), sim.collisions_per_particle(), grid_,
+                                 !config_.diameters.monodisperse()},
+                                impacts_.get(), paths_.get());
   if (impacts_) {
     const ImpactParameterSummary b = summarize_impact_parameters(impacts_->total(), impacts_->bins());
     j["impact_parameters"] = {{"collisions", b.samples}, {"max_abs_B_minus_uniform", b.ks_uniform}};
   }
   if (paths_) {
-    const FreePathSummary p = summarize_free_paths(paths_->total(), paths_->length_bins(), paths_->angle_bins());
+    const FreePathSummary p = summarize_free_paths(paths_->total(), paths_->length_bins(), paths_->angle_bins(), D);
     j["free_paths"] = {{"paths", p.paths},           {"mean_length", p.mean_length},  {"l0_matched_eq_3_36", p.l0_matched},
                        {"alpha0_eq_3_24", p.alpha0}, {"lbar_eq_3_24", p.lbar},        {"ks_matched", p.ks_matched},
-                       {"ks_exponential", p.ks_exponential},
-                       {"thesis_mean_free_path", s.length_x * s.length_y / (2.0 * static_cast<double>(s.particles) * s.diameter)}};
+                       {"ks_exponential", p.ks_exponential}};
+    if constexpr (D == 2) {
+      j["free_paths"]["thesis_mean_free_path"] = s.length_x * s.length_y / (2.0 * static_cast<double>(s.particles) * s.diameter);
+    } else {
+      j["free_paths"]["ks_isotropic_cos_theta"] = p.ks_isotropic;
+      if (config_.diameters.monodisperse()) {
+        const ReferenceMeanFreePaths reference = sphere_mean_free_paths(s);
+        j["free_paths"]["boltzmann_mean_free_path"] = reference.boltzmann;
+        j["free_paths"]["enskog_mean_free_path"] = reference.enskog;
+      }
+    }
   }
   j["collision_statistics_from_c"] = statistics_from_c_;
   return j;

@@ -1,6 +1,7 @@
 // The measurements of a run beyond its time series (configured in [fields] and [collisions]):
-// coarse-grained fields written to fields.h5 as the run goes, and the collision statistics
-// (impact parameters, free paths) written to collisions.h5 at its end.  The run loop asks when it
+// coarse-grained fields (with the collisional stress and heat flux) written to fields.h5 as the run
+// goes, and the collision statistics (impact parameters, free paths) written to collisions.h5 at
+// its end; the same for disks and spheres.  The run loop asks when it
 // must stop for them and calls back after each step; the observers see every collision.
 #pragma once
 
@@ -54,6 +55,8 @@ class RunMeasurements final : public StopClient<D> {
   // The parts common to start() and resume(): schedules, accumulators, observers.
   void set_up(Simulation<D>& sim);
   FieldsMetadata fields_metadata() const;
+  // σ of a monodisperse run; none when polydisperse (the observers take each collision's σ_ij).
+  std::optional<double> monodisperse_diameter() const;
 
   RunConfig config_;
   std::string out_dir_;
@@ -63,14 +66,14 @@ class RunMeasurements final : public StopClient<D> {
   Schedule fields_schedule_;
   std::unique_ptr<FieldsWriter> fields_writer_;
   std::unique_ptr<CellMoments> interval_moments_;
-  std::unique_ptr<CollisionalStressField> collisional_;
+  std::unique_ptr<CollisionalStressField<D>> collisional_;
   double interval_start_t_ = 0.0, interval_start_c_ = 0.0;
   std::int64_t last_fields_collisions_ = -1;
   std::int64_t last_sample_collisions_ = -1;  // the configuration last added to the interval
   // collision statistics
   std::unique_ptr<LocalDensity> density_;
-  std::unique_ptr<ImpactParameterStatistics> impacts_;
-  std::unique_ptr<FreePathStatistics> paths_;
+  std::unique_ptr<ImpactParameterStatistics<D>> impacts_;
+  std::unique_ptr<FreePathStatistics<D>> paths_;
   std::int64_t statistics_start_ = 0;  // collision count at which recording starts
   bool statistics_started_ = false;
   double statistics_from_t_ = 0.0, statistics_from_c_ = 0.0;

@@ -5,6 +5,7 @@
 #include "analysis/collision_statistics_fits.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_util.hpp"
+#include "theory/hard_spheres.hpp"
 
 namespace granule {
 
@@ -35,9 +36,11 @@ void write_impact_summary(hid_t group, const std::vector<double>& counts, const 
 // A group, closed (checked) by the caller.
 Handle group(hid_t location, const char* name) { return Handle(create_group(location, name), H5Gclose); }
 
-void write_impacts(hid_t file, const ImpactParameterStatistics& impacts) {
+template <int D>
+void write_impacts(hid_t file, const ImpactParameterStatistics<D>& impacts) {
   Handle impact_group = group(file, "impact_parameters");
   const hid_t g = impact_group.get();
+  if (D == 3) write_string_attribute(g, "variable", "b_over_sigma_squared");
   const UniformBins& bins = impacts.bins();
   const auto window = impacts.window_collisions();
   write_attribute(g, "window_collisions", H5T_NATIVE_INT64, &window);
@@ -70,8 +73,9 @@ void write_impacts(hid_t file, const ImpactParameterStatistics& impacts) {
   impact_group.close();
 }
 
-void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStatistics& paths) {
-  const FreePathSummary s = summarize_free_paths(h, paths.length_bins(), paths.angle_bins());
+template <int D>
+void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStatistics<D>& paths) {
+  const FreePathSummary s = summarize_free_paths(h, paths.length_bins(), paths.angle_bins(), D);
   const std::vector<hsize_t> joint{size(static_cast<std::size_t>(paths.length_bins().bins)),
                                    size(static_cast<std::size_t>(paths.angle_bins().bins))};
   write_dataset(group, "counts", joint, h.counts);
@@ -90,11 +94,21 @@ void write_path_summary(hid_t group, const PathHistogram& h, const FreePathStati
       {"l0_matched", s.l0_matched}, {"lambda_exponential", s.lambda_exponential},
       {"ks_matched", s.ks_matched}, {"ks_exponential", s.ks_exponential}};
   for (const auto& [name, value] : scalars) write_double(group, name, value);
+  if (D == 3) write_double(group, "ks_isotropic", s.ks_isotropic);
 }
 
-void write_paths(hid_t file, const FreePathStatistics& paths) {
+template <int D>
+void write_paths(hid_t file, const FreePathStatistics<D>& paths, const CollisionStatisticsMetadata& m) {
   Handle path_group = group(file, "free_paths");
   const hid_t g = path_group.get();
+  if (D == 3) {
+    write_string_attribute(g, "angle_variable", "cos_theta_x");
+    if (!m.polydisperse) {
+      const ReferenceMeanFreePaths reference = sphere_mean_free_paths(m.system);
+      write_double(g, "boltzmann_mean_free_path", reference.boltzmann);
+      write_double(g, "enskog_mean_free_path", reference.enskog);
+    }
+  }
   write_vector(g, "length_edges", edges(paths.length_bins()));
   write_vector(g, "angle_edges", edges(paths.angle_bins()));
   Handle total = group(g, "total");
@@ -118,10 +132,11 @@ void write_paths(hid_t file, const FreePathStatistics& paths) {
   path_group.close();
 }
 
-std::string impact_csv(const ImpactParameterStatistics& impacts) {
+template <int D>
+std::string impact_csv(const ImpactParameterStatistics<D>& impacts) {
   const UniformBins& bins = impacts.bins();
   std::vector<ImpactParameterSummary> columns{summarize_impact_parameters(impacts.total(), bins)};
-  std::string out = "b_over_sigma,beta,B_minus_uniform";
+  std::string out = D == 3 ? "b2_over_sigma2,beta,B_minus_uniform" : "b_over_sigma,beta,B_minus_uniform";
   for (std::size_t w = 0; w < impacts.density_windows().size(); ++w) {
     columns.push_back(summarize_impact_parameters(impacts.by_density()[w], bins));
     out += fmt::format(",beta_rho{0},B_minus_uniform_rho{0}", w);
@@ -137,8 +152,9 @@ std::string impact_csv(const ImpactParameterStatistics& impacts) {
   return out;
 }
 
-std::string paths_csv(const FreePathStatistics& paths) {
-  const FreePathSummary s = summarize_free_paths(paths.total(), paths.length_bins(), paths.angle_bins());
+template <int D>
+std::string paths_csv(const FreePathStatistics<D>& paths) {
+  const FreePathSummary s = summarize_free_paths(paths.total(), paths.length_bins(), paths.angle_bins(), D);
   std::string out = "l,P_measured,P_matched_eq_3_36,P_exponential,L_cumulative\n";
   for (int k = 0; k < paths.length_bins().bins; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -150,8 +166,17 @@ std::string paths_csv(const FreePathStatistics& paths) {
 
 }  // namespace
 
+ReferenceMeanFreePaths sphere_mean_free_paths(const SystemParams& s) {
+  const double volume = s.length_x * s.length_y * s.length_z;
+  const double n = static_cast<double>(s.particles) / volume;
+  const double phi = n * theory::particle_volume(3, s.diameter);
+  return {theory::hard_sphere_mean_free_path(3, n, s.diameter, 1.0),
+          theory::hard_sphere_mean_free_path(3, n, s.diameter, theory::carnahan_starling_contact_value(phi))};
+}
+
+template <int D>
 void write_collision_statistics(const std::string& dir, const CollisionStatisticsMetadata& m,
-                                const ImpactParameterStatistics* impacts, const FreePathStatistics* paths) {
+                                const ImpactParameterStatistics<D>* impacts, const FreePathStatistics<D>* paths) {
   if (!impacts && !paths) return;
   const std::string path = dir + "/collisions.h5";
   Handle partial(create_partial_file(path, kFormat, kFormatVersion, m.version), H5Fclose);
@@ -166,11 +191,21 @@ void write_collision_statistics(const std::string& dir, const CollisionStatistic
   }
   write_attribute(file, "density_cells_nx", H5T_NATIVE_INT, &m.density_grid.nx);
   write_attribute(file, "density_cells_ny", H5T_NATIVE_INT, &m.density_grid.ny);
+  if (D == 3) {  // a 2D file has exactly the attributes it had before spheres existed
+    write_attribute(file, "dimension", H5T_NATIVE_INT, &m.system.dimension);
+    write_double(file, "length_z", m.system.length_z);
+    write_attribute(file, "density_cells_nz", H5T_NATIVE_INT, &m.density_grid.nz);
+  }
   if (impacts) write_impacts(file, *impacts);
-  if (paths) write_paths(file, *paths);
+  if (paths) write_paths(file, *paths, m);
   publish_partial_file(partial.release(), path);
   if (impacts) write_file_atomically(dir + "/impact_parameters.csv", impact_csv(*impacts));
   if (paths) write_file_atomically(dir + "/free_paths.csv", paths_csv(*paths));
 }
+
+template void write_collision_statistics(const std::string&, const CollisionStatisticsMetadata&,
+                                         const ImpactParameterStatistics<2>*, const FreePathStatistics<2>*);
+template void write_collision_statistics(const std::string&, const CollisionStatisticsMetadata&,
+                                         const ImpactParameterStatistics<3>*, const FreePathStatistics<3>*);
 
 }  // namespace granule

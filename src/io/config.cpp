@@ -156,13 +156,9 @@ RunConfig resolve(const toml::table& root) {
   f.subtract_shear_profile = in.boolean("fields.subtract_shear_profile").value_or(false);
 
   CollisionStatisticsConfig& k = c.collisions;
-  // Impact parameters and free paths are measured on disks; 3D runs have them off (and refuse them).
-  k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(s.dimension == 2);
+  // Impact parameters and free paths are measured on disks and spheres alike.
+  k.impact_parameters = in.boolean("collisions.impact_parameters").value_or(true);
   k.free_paths = in.boolean("collisions.free_paths").value_or(false);
-  if (s.dimension == 3 && (k.impact_parameters || k.free_paths)) {
-    throw ConfigError{"collisions.impact_parameters and collisions.free_paths are measured in 2D runs only: with "
-                      "system.dimension = 3 set them to false"};
-  }
   k.window_collisions_per_particle =
       collision_count_setting(in, "collisions.window_collisions_per_particle", n).value_or(1.0);
   k.from_collisions_per_particle =

@@ -1,6 +1,5 @@
 #include "io/fields_file.hpp"
 
-#include <array>
 #include <stdexcept>
 
 #include "io/hdf5_util.hpp"
@@ -14,20 +13,71 @@ namespace {
 constexpr const char* kFormat = "granule-fields";
 constexpr int kFormatVersion = 1;
 
-// The collisional and total stress and heat flux datasets of the interval average, in one list.
-template <typename Visit>
-void for_each_stress(Visit&& visit) {
-  for (const char* name : {"collisional_xx", "collisional_xy", "collisional_yy", "pressure_collisional", "collisions",
-                           "total_xx", "total_xy", "total_yy", "pressure_total", "heat_flux_collisional_x",
-                           "heat_flux_collisional_y", "heat_flux_total_x", "heat_flux_total_y"}) {
-    visit(name);
+// The collisional and total stress (1.6), (1.7), their pressures (trace/d) and the collisional and
+// total heat flux of one interval average.
+struct StressFrame {
+  CollisionalStress collisional, total;
+  std::vector<double> pressure_collisional, pressure_total;
+  HeatFlux heat_flux_collisional, heat_flux_total;
+};
+
+StressFrame stress_frame(const FieldsFrame& frame, int dimension) {
+  StressFrame s{*frame.collisional, *frame.collisional, {}, {}, *frame.heat_flux_collisional, *frame.heat_flux_collisional};
+  CellFields kinetic = frame.average;
+  const std::size_t n = s.collisional.xx.size();
+  for (int a = 0; a < dimension; ++a) {
+    for (int b = a; b < dimension; ++b) {
+      for (std::size_t i = 0; i < n; ++i) s.total.component(a, b)[i] = kinetic.kinetic(a, b)[i] + s.collisional.component(a, b)[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      s.heat_flux_total.component(a)[i] = kinetic.heat_flux_kinetic(a)[i] + s.heat_flux_collisional.component(a)[i];
+    }
   }
+  for (std::size_t i = 0; i < n; ++i) {
+    s.pressure_collisional.push_back(s.collisional.pressure(i));
+    s.pressure_total.push_back(s.total.pressure(i));
+  }
+  return s;
+}
+
+// The datasets of a StressFrame, in one list: the 2D set, then in 3D the z components.
+template <typename Stress, typename Visit>
+void for_each_stress(Stress& s, int dimension, Visit&& visit) {
+  visit("collisional_xx", s.collisional.xx);
+  visit("collisional_xy", s.collisional.xy);
+  visit("collisional_yy", s.collisional.yy);
+  visit("pressure_collisional", s.pressure_collisional);
+  visit("collisions", s.collisional.collisions);
+  visit("total_xx", s.total.xx);
+  visit("total_xy", s.total.xy);
+  visit("total_yy", s.total.yy);
+  visit("pressure_total", s.pressure_total);
+  visit("heat_flux_collisional_x", s.heat_flux_collisional.x);
+  visit("heat_flux_collisional_y", s.heat_flux_collisional.y);
+  visit("heat_flux_total_x", s.heat_flux_total.x);
+  visit("heat_flux_total_y", s.heat_flux_total.y);
+  if (dimension != 3) return;
+  visit("collisional_xz", s.collisional.xz);
+  visit("collisional_yz", s.collisional.yz);
+  visit("collisional_zz", s.collisional.zz);
+  visit("total_xz", s.total.xz);
+  visit("total_yz", s.total.yz);
+  visit("total_zz", s.total.zz);
+  visit("heat_flux_collisional_z", s.heat_flux_collisional.z);
+  visit("heat_flux_total_z", s.heat_flux_total.z);
 }
 
 // Streamwise profiles of the interval-averaged heat flux (runs only), in one list.
-constexpr std::array<const char*, 4> kAverageFluxProfiles{
-    "/profiles/average_heat_flux_collisional_x", "/profiles/average_heat_flux_collisional_y",
-    "/profiles/average_heat_flux_total_x", "/profiles/average_heat_flux_total_y"};
+template <typename Stress, typename Visit>
+void for_each_flux_profile(Stress& s, int dimension, Visit&& visit) {
+  visit("/profiles/average_heat_flux_collisional_x", s.heat_flux_collisional.x);
+  visit("/profiles/average_heat_flux_collisional_y", s.heat_flux_collisional.y);
+  visit("/profiles/average_heat_flux_total_x", s.heat_flux_total.x);
+  visit("/profiles/average_heat_flux_total_y", s.heat_flux_total.y);
+  if (dimension != 3) return;
+  visit("/profiles/average_heat_flux_collisional_z", s.heat_flux_collisional.z);
+  visit("/profiles/average_heat_flux_total_z", s.heat_flux_total.z);
+}
 
 // The streamwise profiles of the instantaneous fields, in one list.
 template <typename Profiles, typename Visit>
@@ -68,7 +118,6 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   write_attribute(f, "length_x", H5T_NATIVE_DOUBLE, &grid.length_x);
   write_attribute(f, "length_y", H5T_NATIVE_DOUBLE, &grid.length_y);
   if (grid.dimension == 3) {  // a 2D file has exactly the attributes it had before 3D existed
-    if (with_collisional) throw std::invalid_argument("the collisional stress is not yet written for 3D fields");
     write_attribute(f, "dimension", H5T_NATIVE_INT, &grid.dimension);
     write_attribute(f, "nz", H5T_NATIVE_INT, &grid.nz);
     write_attribute(f, "length_z", H5T_NATIVE_DOUBLE, &grid.length_z);
@@ -92,8 +141,11 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
     add_frames(f, (std::string("/instant/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
     add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
   });
+  StressFrame stress;
   if (with_collisional_) {
-    for_each_stress([&](const char* name) { add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells); });
+    for_each_stress(stress, grid.dimension, [&](const char* name, std::vector<double>&) {
+      add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
+    });
   }
   std::vector<double> y;
   for (int iy = 0; iy < grid.ny; ++iy) y.push_back(grid.center_y(iy));
@@ -101,7 +153,7 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   StreamwiseProfiles profiles;
   for_each_profile(profiles, [&](const char* name, std::vector<double>&) { add_frames(f, name, H5T_NATIVE_DOUBLE, rows); });
   if (with_collisional_) {
-    for (const char* name : kAverageFluxProfiles) add_frames(f, name, H5T_NATIVE_DOUBLE, rows);
+    for_each_flux_profile(stress, grid.dimension, [&](const char* name, std::vector<double>&) { add_frames(f, name, H5T_NATIVE_DOUBLE, rows); });
   }
   file_.flush();
 }
@@ -130,31 +182,13 @@ void FieldsWriter::append(const FieldsFrame& frame) {
     if (!frame.collisional || !frame.heat_flux_collisional) {
       throw std::logic_error("fields frame without the collisional stress and heat flux");
     }
-    const CollisionalStress& c = *frame.collisional;
-    const HeatFlux& qc = *frame.heat_flux_collisional;
-    const CellFields& k = frame.average;
-    const std::size_t n = grid_.cells();
-    std::vector<double> pc(n), txx(n), txy(n), tyy(n), pt(n), qx(n), qy(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      pc[i] = 0.5 * (c.xx[i] + c.yy[i]);
-      txx[i] = k.kinetic_xx[i] + c.xx[i];  // total stress (1.7)
-      txy[i] = k.kinetic_xy[i] + c.xy[i];
-      tyy[i] = k.kinetic_yy[i] + c.yy[i];
-      pt[i] = 0.5 * (txx[i] + tyy[i]);
-      qx[i] = k.heat_flux_kinetic_x[i] + qc.x[i];  // total heat flux q^(k) + q^(c)
-      qy[i] = k.heat_flux_kinetic_y[i] + qc.y[i];
-    }
-    const std::vector<const std::vector<double>*> data{&c.xx, &c.xy, &c.yy, &pc, &c.collisions, &txx, &txy,
-                                                       &tyy, &pt,   &qc.x, &qc.y, &qx,           &qy};
-    std::size_t next = 0;
-    for_each_stress([&](const char* name) {
-      append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, data[next++]->data(), at);
+    const StressFrame stress = stress_frame(frame, grid_.dimension);
+    for_each_stress(stress, grid_.dimension, [&](const char* name, const std::vector<double>& v) {
+      append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
     });
-    const std::array<std::vector<double>, 4> flux_profiles{row_means(grid_, qc.x), row_means(grid_, qc.y),
-                                                           row_means(grid_, qx), row_means(grid_, qy)};
-    for (std::size_t i = 0; i < flux_profiles.size(); ++i) {
-      append_frame(f, kAverageFluxProfiles[i], H5T_NATIVE_DOUBLE, flux_profiles[i].data(), at);
-    }
+    for_each_flux_profile(stress, grid_.dimension, [&](const char* name, const std::vector<double>& v) {
+      append_frame(f, name, H5T_NATIVE_DOUBLE, row_means(grid_, v).data(), at);
+    });
   }
   const StreamwiseProfiles p = streamwise_profiles(frame.instant);
   for_each_profile(p, [&](const char* name, const std::vector<double>& v) { append_frame(f, name, H5T_NATIVE_DOUBLE, v.data(), at); });

@@ -98,8 +98,7 @@ check_run("mixture3d_elastic", MIXTURE, elastic=True)
 check_resume("spheres_sheared", SHEAR)
 check_resume("mixture3d_sheared", [*MIXTURE, *SHEAR])
 
-for key, value, needle in [("collisions.impact_parameters", "true", "collisions.impact_parameters"),
-                           ("engine.cells", "[4, 4]", "engine.cells"),
+for key, value, needle in [("engine.cells", "[4, 4]", "engine.cells"),
                            ("system.area_fraction", "0.1", "system.area_fraction")]:
     result = granule("run", "--out", str(WORK / "refused"), "--force", *SPHERES, "--set", f"{key}={value}")
     check(result.returncode == 2 and needle in result.stderr, f"3D run refuses {key} (exit {result.returncode}: {result.stderr.strip()[:160]})")
