@@ -62,7 +62,7 @@ struct CollisionalStress {
 };
 
 // `diameter`: σ of a monodisperse run, or none (polydisperse): then each collision's own σ_ij.
-template <int D = 2>
+template <int D>
 class CollisionalStressField final : public EventObserver<D> {
  public:
   CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter);

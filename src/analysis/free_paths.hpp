@@ -47,7 +47,7 @@ struct FreePathSettings {
 // The angle bins of free paths in d dimensions: α on [0, 2π) (d = 2), cos θ on [−1, 1] (d = 3).
 UniformBins free_path_angle_bins(int dimension, int bins);
 
-template <int D = 2>
+template <int D>
 class FreePathStatistics final : public EventObserver<D> {
  public:
   FreePathStatistics(std::int64_t particles, FreePathSettings settings, const LocalDensity* density);

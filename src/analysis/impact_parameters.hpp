@@ -30,7 +30,7 @@ struct ImpactParameterWindow {
   std::vector<double> counts;  // per bin of b/σ
 };
 
-template <int D = 2>
+template <int D>
 class ImpactParameterStatistics final : public EventObserver<D> {
  public:
   // `diameter`: σ of a monodisperse run, or none (polydisperse): each collision's σ_ij.

@@ -78,7 +78,7 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
 
 // Times `o.collisions_per_particle` after the untimed start, in chunks of one collision per particle;
 // at each chunk the run loop's O(N) work of the chosen measurements (diagnostics sample, density
-// refresh) is done as in `granule run` (2D: the measurements are those of 2D runs).
+// refresh) is done as in `granule run`.
 template <int D>
 void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
   const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d);
@@ -98,28 +98,25 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   sim.start_production(w.restitution);
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
   const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
-  const FieldGrid cells = default_field_grid(p.length_x, p.length_y, p.particles);
-  GlobalDiagnostics<2> diagnostics(p, cells.nx, cells.ny);
-  CollisionalStressField stress(cells, p.diameter);
+  const FieldGrid cells = D == 3 ? default_field_grid_3d(p.length_x, p.length_y, p.length_z, p.particles)
+                                 : default_field_grid(p.length_x, p.length_y, p.particles);
+  GlobalDiagnostics<D> diagnostics(p, cells);
+  CollisionalStressField<D> stress(cells, p.diameter);
   LocalDensity density(cells);
-  ImpactParameterStatistics impacts(p.diameter, 50, p.particles, {}, &density);
-  FreePathStatistics paths(p.particles, FreePathSettings{}, &density);
-  if constexpr (D == 2) {
-    paths.start();
-    if (at_least(Measurements::kDiagnostics)) sim.add_observer(&diagnostics);
-    if (at_least(Measurements::kStressField)) sim.add_observer(&stress);
-    if (at_least(Measurements::kImpacts)) sim.add_observer(&impacts);
-    if (at_least(Measurements::kFreePaths)) sim.add_observer(&paths);
-  }
+  ImpactParameterStatistics<D> impacts(p.diameter, 50, p.particles, {}, &density);
+  FreePathStatistics<D> paths(p.particles, FreePathSettings{}, &density);
+  paths.start();
+  if (at_least(Measurements::kDiagnostics)) sim.add_observer(&diagnostics);
+  if (at_least(Measurements::kStressField)) sim.add_observer(&stress);
+  if (at_least(Measurements::kImpacts)) sim.add_observer(&impacts);
+  if (at_least(Measurements::kFreePaths)) sim.add_observer(&paths);
   const auto start = std::chrono::steady_clock::now();
   while (sim.collisions() < target) {
     sim.run(std::numeric_limits<double>::infinity(), std::min<std::int64_t>(target, sim.collisions() + p.particles));
-    if constexpr (D == 2) {
-      if (at_least(Measurements::kDiagnostics)) {
-        diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
-      }
-      if (at_least(Measurements::kImpacts)) density.update(sim.state());
+    if (at_least(Measurements::kDiagnostics)) {
+      diagnostics.sample(sim.state(), sim.time(), sim.collisions(), sim.image_velocity(), sim.shear_offset());
     }
+    if (at_least(Measurements::kImpacts)) density.update(sim.state());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   static const char* const kMeasured[] = {"", " +diagnostics", " +stress field", " +impacts", " +free paths"};
@@ -172,11 +169,17 @@ void add_bench_command(CLI::App& root) {
     if (options->dimensions != "2") {
       for (const Workload& w : workloads_3d) run_workload<3>(w, *options);
     }
-    if (!options->observers || options->dimensions == "3") return;
-    for (const Workload& w : {workloads[2], workloads[3]}) {
-      for (Measurements m : {Measurements::kDiagnostics, Measurements::kStressField, Measurements::kImpacts,
-                             Measurements::kFreePaths}) {
-        run_workload<2>(w, *options, m);
+    if (!options->observers) return;
+    const Measurements added[] = {Measurements::kDiagnostics, Measurements::kStressField, Measurements::kImpacts,
+                                  Measurements::kFreePaths};
+    if (options->dimensions != "3") {
+      for (const Workload& w : {workloads[2], workloads[3]}) {
+        for (Measurements m : added) run_workload<2>(w, *options, m);
+      }
+    }
+    if (options->dimensions != "2") {
+      for (const Workload& w : {workloads_3d[2], workloads_3d[3]}) {
+        for (Measurements m : added) run_workload<3>(w, *options, m);
       }
     }
   });

@@ -170,12 +170,15 @@ RunConfig resolve(const toml::table& root) {
   k.impact_bins = static_cast<int>(in.integer("collisions.impact_bins", 2, 100000).value_or(50));
   k.length_bins = static_cast<int>(in.integer("collisions.length_bins", 2, 100000).value_or(100));
   k.angle_bins = static_cast<int>(in.integer("collisions.angle_bins", 4, 100000).value_or(72));
-  // Default range: ten mean free paths l = Lx Ly / (2 N σ) (thesis §3.1.2).  The bin width must
-  // stay a normal number, and the range finite.
-  const NumberRange lengths{kMinMaxLengthOverDiameter * s.diameter, kMaxMaxLengthOverBox * std::max(s.length_x, s.length_y)};
+  // Default range: ten mean free paths, l = Lx Ly / (2 N σ) in 2D (thesis §3.1.2) and the
+  // Boltzmann l = 1/(√2 π n σ²) in 3D.  The bin width must stay a normal number, and the range finite.
+  const NumberRange lengths{kMinMaxLengthOverDiameter * s.diameter,
+                            kMaxMaxLengthOverBox * std::max({s.length_x, s.length_y, s.dimension == 3 ? s.length_z : 0.0})};
   k.max_length = in.number("collisions.max_length", lengths,
                            fmt::format(" ({:g} σ to {:g} box lengths)", kMinMaxLengthOverDiameter, kMaxMaxLengthOverBox))
-                     .value_or(10.0 * s.length_x * s.length_y / (2.0 * static_cast<double>(n) * s.diameter));
+                     .value_or(s.dimension == 3 ? 10.0 * s.length_x * s.length_y * s.length_z /
+                                                      (std::sqrt(2.0) * M_PI * static_cast<double>(n) * s.diameter * s.diameter)
+                                                : 10.0 * s.length_x * s.length_y / (2.0 * static_cast<double>(n) * s.diameter));
   return c;
 }
 

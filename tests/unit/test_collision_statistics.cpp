@@ -29,7 +29,7 @@ CollisionRecord<2> record(double t, int a, int b, Vec2 contact, Vec2 k, Vec2 v21
 
 TEST(CollisionalStress, EachCollisionAddsSigmaJkkOverCellAreaAndInterval) {
   const FieldGrid grid{2, 1, 2.0, 1.0};
-  CollisionalStressField field(grid, 0.1);
+  CollisionalStressField<2> field(grid, 0.1);
   field.restart(1.0);
   const double s = std::sqrt(0.5);
   field.on_collision(record(1.2, 0, 1, {0.5, 0.5}, {1.0, 0.0}, {1.0, 0.0}, 2.0));
@@ -60,7 +60,7 @@ TEST(ImpactParameterStatistics, WindowsOfConsecutiveCollisionsAndDensityWindows)
   s.y = {0.5, 0.5, 0.5, 0.5};
   s.vx = s.vy = {0, 0, 0, 0};
   density.update(s);
-  ImpactParameterStatistics stats(1.0, 4, 2, {{2.0, 4.0}}, &density);
+  ImpactParameterStatistics<2> stats(1.0, 4, 2, {{2.0, 4.0}}, &density);
   stats.on_collision(record(1.0, 0, 1, {0.5, 0.5}, {1, 0}, {1, 0}));  // b = 0, dense cell
   stats.on_collision(record(2.0, 0, 1, {1.5, 0.5}, {1, 0}, {0, 1}));  // b = σ, dilute cell
   stats.on_collision(record(3.0, 0, 1, {0.5, 0.5}, {1, 0}, {0, 1}));  // opens the second window
@@ -77,7 +77,7 @@ TEST(FreePathStatistics, PathIsTheFlightSinceThePreviousCollision) {
   settings.length_bins = 10;
   settings.angle_bins = 4;
   settings.max_length = 10.0;
-  FreePathStatistics paths(3, settings, nullptr);
+  FreePathStatistics<2> paths(3, settings, nullptr);
   paths.start();
   CollisionRecord<2> a = record(1.0, 0, 1, {}, {1, 0}, {1, 0});
   a.first_velocity_after = {0.0, 2.0};   // disk 0 then flies up at speed 2

@@ -58,7 +58,7 @@ double draw_length(Random& random, double lbar) {
 // 1 at times 0, 1, 2, …: the velocity after each collision is the next path (flight time 1).
 template <typename Draw>
 PathHistogram observed_paths(int paths, const FreePathSettings& settings, Draw&& draw) {
-  FreePathStatistics statistics(2, settings, nullptr);
+  FreePathStatistics<2> statistics(2, settings, nullptr);
   statistics.start();
   const auto velocity = [&] {
     const auto [length, alpha] = draw();

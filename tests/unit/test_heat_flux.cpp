@@ -121,7 +121,7 @@ TEST(CollisionalHeatFlux, OneCollisionCarriesHalfTheDifferenceOfTheEnergyChanges
   const double sigma = 0.05, e = 0.7, t = 2.5;
   const Vec2 v1{2.0, 0.5}, v2{-1.0, 0.3}, k{0.6, 0.8}, reference{0.4, -0.2};
   const FieldGrid grid{1, 1, 1.0, 1.0};
-  CollisionalStressField field(grid, sigma);
+  CollisionalStressField<2> field(grid, sigma);
   field.restart(0.0);
   const CollisionRecord<2> r = record_of({0.3, 0.4}, v1, v2, k, sigma, e);
   field.on_collision(r);
@@ -167,7 +167,7 @@ TEST(CollisionalHeatFlux, ProfileSubtractedFieldsTakeTheFluxAboutTheMeanFlowAtTh
   const double sigma = 0.05;
   const FieldGrid grid{1, 2, 1.0, 1.0};
   const ShearFrame frame{1.0, 1.0, 4.0};  // u(0.75) = 1
-  CollisionalStressField field(grid, sigma);
+  CollisionalStressField<2> field(grid, sigma);
   const Vec2 k{0.8, 0.6};
   field.on_collision(record_of({0.5, 0.7}, {2.0, 0.0}, {0.0, 0.0}, k, sigma, 1.0));
   const CollisionalStress stress = field.stress(1.0);

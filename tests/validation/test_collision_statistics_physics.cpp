@@ -78,12 +78,12 @@ struct EquilibriumRun {
     sim.run(kInf, collisions_for(params, 20.0));
     const ShearFrame frame{1.0, 1.0, 0.0};
     GlobalDiagnostics<2> diagnostics(params, 10, 10);
-    CollisionalStressField stress(grid, params.diameter);
-    ImpactParameterStatistics impacts(params.diameter, 1000, params.particles, {}, nullptr);
+    CollisionalStressField<2> stress(grid, params.diameter);
+    ImpactParameterStatistics<2> impacts(params.diameter, 1000, params.particles, {}, nullptr);
     FreePathSettings settings;
     settings.max_length = 12.0 / (2.0 * std::sqrt(2.0) * 3000.0 * params.diameter);
     settings.length_bins = 240;
-    FreePathStatistics free_paths(params.particles, settings, nullptr);
+    FreePathStatistics<2> free_paths(params.particles, settings, nullptr);
     for (EventObserver<2>* o : std::vector<EventObserver<2>*>{&diagnostics, &stress, &free_paths}) sim.add_observer(o);
     sim.run(kInf, sim.collisions() + collisions_for(params, 2.0));  // every disk's flight history known
     sim.add_observer(&impacts);
@@ -228,7 +228,7 @@ TEST(FieldsValidation, LeesEdwardsProfileIsLinearWithSlopeGammaAndShearStressesA
   const ShearFrame frame{1.0, 1.0, p.shear_velocity};
   const FieldGrid grid{8, 16, 1.0, 1.0};
   sim.run(kInf, collisions_for(p, 20.0));
-  CollisionalStressField stress(grid, p.diameter);
+  CollisionalStressField<2> stress(grid, p.diameter);
   sim.add_observer(&stress);
   stress.restart(sim.time());
   CellMoments moments(grid);
@@ -269,9 +269,9 @@ TEST(FieldsValidation, ObserversDoNotChangeTheTrajectory) {
   const FieldGrid grid{6, 6, 1.0, 1.0};
   LocalDensity density(grid);
   density.update(measured.state());
-  CollisionalStressField stress(grid, p.diameter);
-  ImpactParameterStatistics impacts(p.diameter, 50, 100, {{0.0, 1e9}}, &density);
-  FreePathStatistics paths(p.particles, FreePathSettings{}, &density);
+  CollisionalStressField<2> stress(grid, p.diameter);
+  ImpactParameterStatistics<2> impacts(p.diameter, 50, 100, {{0.0, 1e9}}, &density);
+  FreePathStatistics<2> paths(p.particles, FreePathSettings{}, &density);
   paths.start();
   for (EventObserver<2>* o : std::vector<EventObserver<2>*>{&stress, &impacts, &paths}) measured.add_observer(o);
   plain.run(kInf, collisions_for(p, 5.0));

@@ -44,7 +44,7 @@ TEST(CollisionalHeatFlux, CellsSumToTheGlobalTransferOfTheRecordsUnderLeesEdward
   const SystemParams p = make_system(500, 0.3, 0.8, 4.0);
   Simulation<2> sim = make_simulation(p, 17);
   const FieldGrid grid{4, 5, p.length_x, p.length_y};
-  CollisionalStressField field(grid, p.diameter);
+  CollisionalStressField<2> field(grid, p.diameter);
   GlobalEnergyTransfer global;
   global.shear_velocity = p.shear_velocity;
   global.diameter = p.diameter;
@@ -77,7 +77,7 @@ TEST(CollisionalHeatFlux, DriftingElasticGasAtEquilibriumCarriesNoHeat) {
   Simulation<2> sim(p, *engine_grid.grid, init.state);
   sim.run(kInf, collisions_for(p, 5.0));  // forget the initial state
   const FieldGrid box{1, 1, p.length_x, p.length_y};
-  CollisionalStressField field(box, p.diameter);
+  CollisionalStressField<2> field(box, p.diameter);
   sim.add_observer(&field);
   // 40 blocks of 2 collisions per disk: block means of q^(c) about the drift, and of the lab-frame transfer.
   const int blocks = 40;
