@@ -21,6 +21,8 @@ struct DominantMode {
   // power / ⟨power⟩ of uncorrelated positions, and the chance that uncorrelated positions put at least
   // this much into some mode: each of the K independent modes (pairs ±k) of such a gas carries an
   // exponentially distributed power of that mean, so p = 1 − (1 − e^{−s})^K for s = power_over_ideal_gas.
+  // Exact (for large N) for R and for one momentum component; for P, a sum of d components whose tail
+  // beyond s ≳ 2 is thinner than e^{−s}, it overstates p (a conservative significance).
   double power_over_ideal_gas = 0.0;
   double noise_p_value = 1.0;
 };

@@ -24,6 +24,7 @@ struct PowerMaps {
   std::vector<double> kz = {}, momentum_z = {};  // 3D only
   double ideal_density = 0.0;                        // ⟨R⟩ of uncorrelated positions
   std::array<double, 3> ideal_momentum_axes = {};     // ⟨P_x⟩, ⟨P_y⟩, ⟨P_z⟩ likewise
+  double ideal_momentum_spread = 1.0;                 // sd of P over its mean, likewise
 
   double ideal_momentum() const { return ideal_momentum_axes[0] + ideal_momentum_axes[1] + ideal_momentum_axes[2]; }
   double k(std::size_t i) const;  // |k| of mode i

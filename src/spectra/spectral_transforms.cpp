@@ -1,5 +1,7 @@
 #include "spectra/spectral_transforms.hpp"
 
+#include <array>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 
@@ -39,13 +41,23 @@ DensityMomentumTransforms transform_fields(const ParticleState& state, const She
   for (ModeValues& values : sums) {
     for (auto& value : values) value *= 0.5 / std::numbers::pi;
   }
+  std::array<std::array<double, 3>, 3> covariance = {};
   for (std::size_t j = 0; j < state.size(); ++j) {
     const double w = points.weight(0, j);
     out.ideal_density += w * w * kInverseFourPiSquared;
-    for (std::size_t f = 1; f < points.weights.size(); ++f) {
-      out.ideal_momentum_axes[f - 1] += points.weight(f, j) * points.weight(f, j) * kInverseFourPiSquared;
+    for (std::size_t a = 1; a < points.weights.size(); ++a) {
+      for (std::size_t b = 1; b < points.weights.size(); ++b) {
+        covariance[a - 1][b - 1] += points.weight(a, j) * points.weight(b, j) * kInverseFourPiSquared;
+      }
     }
   }
+  double trace = 0.0, squares = 0.0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    out.ideal_momentum_axes[a] = covariance[a][a];
+    trace += covariance[a][a];
+    for (std::size_t b = 0; b < 3; ++b) squares += covariance[a][b] * covariance[a][b];
+  }
+  if (trace > 0.0) out.ideal_momentum_spread = std::sqrt(squares) / trace;
   out.density = std::move(sums[0]);
   out.momentum_x = std::move(sums[1]);
   out.momentum_y = std::move(sums[2]);

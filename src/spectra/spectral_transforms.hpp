@@ -37,6 +37,10 @@ struct DensityMomentumTransforms {
   double ideal_density = 0.0;  // Σ_j m_j²/4π²: ⟨|ρ̃|²⟩ of uncorrelated positions
   // Σ_j m_j² v_{j,a}²/4π² for a = x, y (, z) (v′_x with the profile removed): ⟨|p̃_a|²⟩ likewise
   std::array<double, 3> ideal_momentum_axes = {};
+  // The sd of |p̃|² over its mean for uncorrelated positions: the components are complex Gaussians with
+  // covariance C_ab = Σ_j m_j² v_{j,a} v_{j,b}/4π², so Var |p̃|² = Σ_ab C_ab² and the ratio is
+  // √(Σ_ab C_ab²)/tr C — 1 for a single component, ≈ 1/√d for d equal uncorrelated ones.
+  double ideal_momentum_spread = 1.0;
 };
 
 // `state` holds lab-frame positions inside the box, of the lattice's dimension (std::invalid_argument
