@@ -88,39 +88,33 @@ std::vector<std::vector<Complex>> fold_into_complex_grids(const std::vector<doub
   return grids;
 }
 
-// 3D: deposit straight into the complex n³ grids (x fastest, two fields per grid as in 2D), the window's
-// grid points wrapped periodically; positions at (ξ mod L_x, y, z).
-std::vector<std::vector<Complex>> deposit_into_complex_grids_3d(const WeightedPoints& points,
-                                                                const ReciprocalLattice& lattice,
-                                                                const GriddingKernel& kernel, int n) {
+// 3D: deposit the fields `pair` × 2 and × 2 + 1 (real and imaginary part, as in 2D) straight into one
+// complex n³ grid (x fastest), the window's grid points wrapped periodically; positions at
+// (ξ mod L_x, y, z mod L_z).  One pair at a time keeps a single n³ grid alive.
+std::vector<Complex> deposit_pair_3d(const WeightedPoints& points, const ReciprocalLattice& lattice,
+                                     const GriddingKernel& kernel, int n, std::size_t pair) {
   const int w = kernel.width();
   const std::size_t fields = points.weights.size();
   const auto side = static_cast<std::size_t>(n);
-  std::vector<std::vector<Complex>> grids((fields + 1) / 2, std::vector<Complex>(side * side * side));
+  std::vector<Complex> grid(side * side * side);
   const auto wrapped = [n](int i) { return static_cast<std::size_t>((i % n + n) % n); };
-  std::vector<Complex> pair_weight(grids.size());
   std::vector<std::size_t> column(static_cast<std::size_t>(w));
   for (std::size_t j = 0; j < points.size(); ++j) {
     const AxisWindow along_x(kernel, grid_coordinate(lattice.sheared_abscissa(points.x[j], points.y[j]), lattice.length_x, n));
     const AxisWindow along_y(kernel, grid_coordinate(points.y[j], lattice.length_y, n));
     const AxisWindow along_z(kernel, grid_coordinate(points.z[j], lattice.length_z, n));
-    for (std::size_t g = 0; g < grids.size(); ++g) {
-      pair_weight[g] = {points.weight(2 * g, j), 2 * g + 1 < fields ? points.weight(2 * g + 1, j) : 0.0};
-    }
+    const Complex weight(points.weight(2 * pair, j), 2 * pair + 1 < fields ? points.weight(2 * pair + 1, j) : 0.0);
     for (int b = 0; b < w; ++b) column[static_cast<std::size_t>(b)] = wrapped(along_x.first + b);
     for (int c = 0; c < w; ++c) {
       const std::size_t plane = wrapped(along_z.first + c) * side;
       for (int a = 0; a < w; ++a) {
-        const std::size_t row = (plane + wrapped(along_y.first + a)) * side;
+        Complex* row = &grid[(plane + wrapped(along_y.first + a)) * side];
         const double wzy = along_z.values[static_cast<std::size_t>(c)] * along_y.values[static_cast<std::size_t>(a)];
-        for (std::size_t b = 0; b < static_cast<std::size_t>(w); ++b) {
-          const double v = wzy * along_x.values[b];
-          for (std::size_t g = 0; g < grids.size(); ++g) grids[g][row + column[b]] += v * pair_weight[g];
-        }
+        for (std::size_t b = 0; b < static_cast<std::size_t>(w); ++b) row[column[b]] += (wzy * along_x.values[b]) * weight;
       }
     }
   }
-  return grids;
+  return grid;
 }
 
 // B(l, m) = Σ_grid b e^{+i(l gx + m gy) 2π/n} for |l|, |m| ≤ M of one n × n plane (overwritten): rows
@@ -180,9 +174,9 @@ std::vector<ModeValues> fast_mode_sums(const WeightedPoints& points, const Recip
   const std::size_t fields = points.weights.size();
   const bool depth = lattice.dimension == 3;
   if (depth && points.z.size() != points.size()) throw std::invalid_argument("fast_mode_sums: 3D lattice without z");
-  std::vector<std::vector<Complex>> grids =
-      depth ? deposit_into_complex_grids_3d(points, lattice, kernel, n)
-            : fold_into_complex_grids(deposit(points, lattice, kernel, n), fields, n, kernel.width());
+  // 2D: every pair of fields gridded in one pass; 3D: one pair at a time (below).
+  std::vector<std::vector<Complex>> planes;
+  if (!depth) planes = fold_into_complex_grids(deposit(points, lattice, kernel, n), fields, n, kernel.width());
 
   // The window multiplied mode (l, m, n') by Φ(2πl/n) Φ(2πm/n) (Φ(2πn'/n)): divide it out.
   const ModeGrid modes{max_mode, lattice.dimension};
@@ -192,8 +186,14 @@ std::vector<ModeValues> fast_mode_sums(const WeightedPoints& points, const Recip
   }
   const auto window_at = [&](int l) { return window[static_cast<std::size_t>(l + max_mode)]; };
   std::vector<ModeValues> sums(fields, ModeValues(modes.count()));
-  for (std::size_t g = 0; g < grids.size(); ++g) {
-    const ModeValues packed = depth ? transform_grid_3d(grids[g], n, max_mode) : transform_plane(grids[g].data(), n, max_mode);
+  for (std::size_t g = 0; g < (fields + 1) / 2; ++g) {
+    ModeValues packed;
+    if (depth) {
+      std::vector<Complex> grid = deposit_pair_3d(points, lattice, kernel, n, g);
+      packed = transform_grid_3d(grid, n, max_mode);
+    } else {
+      packed = transform_plane(planes[g].data(), n, max_mode);
+    }
     for (int k = -modes.max_mode_z(); k <= modes.max_mode_z(); ++k) {
       const double window_z = depth ? window_at(k) : 1.0;  // ×1 leaves the 2D products bit for bit
       for (int m = -max_mode; m <= max_mode; ++m) {

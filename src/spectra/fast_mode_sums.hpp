@@ -9,7 +9,8 @@
 //
 // 3D: the same on an n³ grid (deposited straight into it with periodic wrapping: a padded grid would
 // cost ((n + 2w)/n)³ more), at (ξ mod L_x, y, z mod L_z), z plainly periodic.  Cost O(N w³ + n³ log n),
-// memory 16 n³ bytes per pair of fields (M = 32: n = 135, 39 MB per pair; M = 64: n = 270, 315 MB).
+// memory one complex n³ grid, 16 n³ bytes, at a time: the pairs of fields are gridded one after the
+// other (M = 32: n = 135, 39 MB; M = 64: n = 270, 315 MB).
 //
 // Accuracy (tested against exact_mode_sums): the error of a mode is a small fraction of the window's
 // aliasing, ~10^−(w−1), times a sum over particles — it scales like √(Σ w_j²) for scattered

@@ -22,13 +22,7 @@ constexpr double kTolerance = 1e-5;  // fast method: ~1e−6 of the ideal-gas ma
 
 class SpectraTransforms3d : public ::testing::TestWithParam<SpectralMethod> {
  protected:
-  TransformOptions options(int max_mode, bool subtract = false) const {
-    TransformOptions o;
-    o.max_mode = max_mode;
-    o.method = GetParam();
-    o.subtract_shear_profile = subtract;
-    return o;
-  }
+  TransformOptions options(int max_mode, bool subtract = false) const { return {max_mode, GetParam(), subtract, {}}; }
 };
 
 // One particle of mass 2 at r in a sheared 2 × 1 × 1.5 box (Δ = 0.7): ρ̃(k) = 2 e^{ik·r}/2π with
