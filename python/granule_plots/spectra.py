@@ -3,7 +3,10 @@ analysed frame (--frame counts the frames of the file): (A) the annulus sum R(k)
 (B) P(k), P_x(k), P_y(k) of the momentum power against |k| (thesis Figs 2.8-2.10), R beside the level
 of uncorrelated positions (modes × N/4π²); (C-E) the power maps R, P_x, P_y over (k_x, k_y) on log
 shades, k = 0 left out, the dominant mode ±k circled (Figs 3.21-3.27); (F) the dominant length 2π/|k|
-of R and P against c beside L0 = l/√(1−ẽ²) (1.1).  Two rows of three 5 × 4.5 inch panels."""
+of R and P against c beside L0 = l/√(1−ẽ²) (1.1).  Two rows of three 5 × 4.5 inch panels.
+3D runs (Appendix C): (A, B) the shell-averaged S_R(k) and S_P(k) over the uncorrelated level, with
+the band 1 ± 2 sd of an ideal gas; (C-E) the maps on the plane k_z = 0; the dominant modes are those of
+the whole 3D lattice (marked on the plane by their (k_x, k_y))."""
 import math
 
 import numpy as np
@@ -15,6 +18,30 @@ KIND = "spectra"
 MAPS = [("R", "(C) R = |ρ̃|² (3.13)"), ("Px", "(D) P_x = |p̃_x|² (3.14)"), ("Py", "(E) P_y = |p̃_y|² (3.15)")]
 
 
+def mark_cluster_k(ax, ring_k, dk, cluster_k):
+    """Mark the wavenumber of the cluster length only where the rings reach, not to squash them."""
+    if cluster_k is not None and len(ring_k) and cluster_k <= ring_k[-1] + dk:
+        ax.axvline(cluster_k, color="grey", ls=":", lw=1, label="2π/L0 (1.1)")
+    elif cluster_k is not None:
+        ax.plot([], [], " ", label=f"2π/L0 = {cluster_k:.3g} lies beyond the rings")
+
+
+def draw_shells(ax_mass, ax_momentum, f, k, cluster_k):
+    """3D: the shell-averaged spectra over the uncorrelated level, beside its band 1 ± 2 sd."""
+    ring_k = f["shell_k"][:]
+    drawn = {"k": ring_k, "modes": f["shell_modes"][k]}
+    for ax, name, title in ((ax_mass, "R", "(A) mass S_R(k) = ⟨R⟩_shell / (Σm²/4π²)"),
+                            (ax_momentum, "P", "(B) momentum S_P(k) = ⟨P⟩_shell / (Σm²v²/4π²)")):
+        value, sd = f["S_" + name][k], f[f"S_{name}_sd"][k]
+        ax.fill_between(ring_k, 1 - 2 * sd, 1 + 2 * sd, color="0.85", label="uncorrelated positions: 1 ± 2 sd")
+        ax.plot(ring_k, value, "o-", ms=3, lw=1, label=f"S_{name}(k)")
+        mark_cluster_k(ax, ring_k, float(f.attrs["dk"]), cluster_k)
+        ax.set(xlabel="|k|", ylim=(0, None), title=title)
+        legend(ax)
+        drawn["S_" + name], drawn[f"S_{name}_sd"] = value, sd
+    return drawn
+
+
 def draw_annulus(ax_mass, ax_momentum, f, k, cluster_k):
     ring_k = f["annulus_k"][:]
     uncorrelated = f["annulus_modes"][k] * float(f.attrs["particles"]) / (4.0 * math.pi ** 2)
@@ -23,11 +50,7 @@ def draw_annulus(ax_mass, ax_momentum, f, k, cluster_k):
     for name, label in (("P", "P = P_x + P_y"), ("Px", "P_x"), ("Py", "P_y")):
         ax_momentum.plot(ring_k, f["annulus_" + name][k], "o-", ms=2, lw=1, label=label)
     for ax, title in ((ax_mass, "(A) mass spectrum R(k)"), (ax_momentum, "(B) momentum spectrum P(k)")):
-        # Mark the wavenumber of the cluster length only where the rings reach, not to squash them.
-        if cluster_k is not None and len(ring_k) and cluster_k <= ring_k[-1] + float(f.attrs["dk"]):
-            ax.axvline(cluster_k, color="grey", ls=":", lw=1, label="2π/L0 (1.1)")
-        elif cluster_k is not None:
-            ax.plot([], [], " ", label=f"2π/L0 = {cluster_k:.3g} lies beyond the rings")
+        mark_cluster_k(ax, ring_k, float(f.attrs["dk"]), cluster_k)
         ax.set(xlabel="|k|", ylim=(0, None), title=title)
         legend(ax)
     return {"k": ring_k, "modes": f["annulus_modes"][k], "uncorrelated_R": uncorrelated,
@@ -43,8 +66,10 @@ def draw_map(fig, ax, f, k, name, title):
     if "dominant" in f:
         d = f["dominant/" + name]
         top = np.array([d["kx"][k], d["ky"][k]])
+        # 3D: the dominant mode of the whole lattice, drawn at its (k_x, k_y) and labelled with its k_z.
+        off_plane = f", k_z = {d['kz'][k]:.3g}" if "kz" in d else ""
         ax.plot([top[0], -top[0]], [top[1], -top[1]], "o", mfc="none", mec="r", ms=9,
-                label=f"dominant: 2π/|k| = {d['length'][k]:.3g}")
+                label=f"dominant: 2π/|k| = {d['length'][k]:.3g}{off_plane}")
         legend(ax)
         drawn["dominant_k"] = top
     ax.set(xlabel="k_x", ylabel="k_y", aspect="equal", title=title)
@@ -78,13 +103,19 @@ def main():
         axes = [fig.add_subplot(2, 3, n + 1) for n in range(6)]
         data = {"frame": k, "frame_index": f["frame_index"][k], "t": f["time"][k], "c": f["collisions_per_particle"][k],
                 "L0": cluster_length}
-        data["annulus"] = draw_annulus(axes[0], axes[1], f, k, cluster_k)
-        data["maps"] = {name: draw_map(fig, ax, f, k, name, title) for ax, (name, title) in zip(axes[2:5], MAPS)}
+        three_d = int(f.attrs.get("dimension", 2)) == 3
+        if three_d:
+            data["shells"] = draw_shells(axes[0], axes[1], f, k, cluster_k)
+        else:
+            data["annulus"] = draw_annulus(axes[0], axes[1], f, k, cluster_k)
+        plane = " on k_z = 0" if three_d else ""
+        data["maps"] = {name: draw_map(fig, ax, f, k, name, title + plane) for ax, (name, title) in zip(axes[2:5], MAPS)}
         if "dominant" in f:
             data["dominant"] = draw_dominant(axes[5], f, k, cluster_length)
         else:
             axes[5].text(0.5, 0.5, "no dominant-mode series in the file", ha="center", transform=axes[5].transAxes)
-        fig.suptitle(f"N = {int(f.attrs['particles'])}, ν = {float(f.attrs['area_fraction']):g}, "
+        fraction = f.attrs["packing_fraction"] if three_d else f.attrs["area_fraction"]
+        fig.suptitle(f"N = {int(f.attrs['particles'])}, {'φ' if three_d else 'ν'} = {float(fraction):g}, "
                      f"ẽ = {float(f.attrs['restitution']):g}, {text(f.attrs['boundary'])}; snapshot "
                      f"{int(data['frame_index'])} at t = {data['t']:.4g}, c = {data['c']:.4g}; M = {int(f.attrs['max_mode'])}",
                      fontsize=10)

@@ -1,6 +1,8 @@
 // `granule analyze spectra SNAPSHOTS.h5`: Fourier spectra of the mass and momentum densities of
-// each chosen frame (thesis §2.2, §3.2.1): the 2D power maps R, P_x, P_y, P, their annulus integrals
-// against |k|, and the dominant wavevector against L0 = l/√(1−ẽ²) (1.1).  Schema: docs/spectra.md.
+// each chosen frame (thesis §2.2, §3.2.1): the power maps R, P_x, P_y (, P_z), P, their annulus (2D) or
+// shell (3D) integrals against |k|, and the dominant wavevector against L0 = l/√(1−ẽ²) (1.1).  3D runs
+// also get the shell-averaged S(k) with its statistical band and the dominant mode's significance; their
+// maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
 #include <fmt/format.h>
 #include <hdf5.h>
 
@@ -12,6 +14,7 @@
 #include <new>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +27,7 @@
 #include "io/snapshot_file.hpp"
 #include "spectra/dominant_mode.hpp"
 #include "spectra/power_spectra.hpp"
+#include "spectra/shell_structure_factor.hpp"
 
 namespace granule::app {
 
@@ -33,13 +37,15 @@ using namespace granule::spectra;
 
 constexpr int kExitBadInput = 2;
 constexpr int kMaxModeLimit = 2048;
+constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
+constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
 constexpr const char* kFormat = "granule-spectra";
 constexpr int kFormatVersion = 1;
 
 struct SpectraOptions {
   std::string snapshots;
   std::string frames = "all";
-  int max_mode = 64;
+  std::optional<int> max_mode;  // default kDefaultMaxMode (2D), kDefaultMaxMode3d (3D)
   std::optional<double> dk;
   std::string method = "fast";
   bool subtract_shear = false;
@@ -88,16 +94,32 @@ std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t tot
   return frames;
 }
 
-// The four spectra, in output order: name in the file, and the map of PowerMaps it comes from.
+// The spectra, in output order: name in the file, the map of PowerMaps and the sum of AnnulusSpectrum
+// it comes from, and its mean power for uncorrelated positions.
 struct FieldChoice {
   const char* name;
   const std::vector<double> PowerMaps::*map;
   const std::vector<double> AnnulusSpectrum::*annulus;
+  double (*ideal_level)(const PowerMaps&);
 };
-constexpr FieldChoice kFields[] = {{"R", &PowerMaps::density, &AnnulusSpectrum::density},
-                                   {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x},
-                                   {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y},
-                                   {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum}};
+constexpr FieldChoice kFields[] = {
+    {"R", &PowerMaps::density, &AnnulusSpectrum::density, [](const PowerMaps& p) { return p.ideal_density; }},
+    {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x, [](const PowerMaps& p) { return p.ideal_momentum_axes[0]; }},
+    {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y, [](const PowerMaps& p) { return p.ideal_momentum_axes[1]; }},
+    {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum, [](const PowerMaps& p) { return p.ideal_momentum(); }}};
+constexpr FieldChoice kFields3d[] = {
+    kFields[0], kFields[1], kFields[2],
+    {"Pz", &PowerMaps::momentum_z, &AnnulusSpectrum::momentum_z, [](const PowerMaps& p) { return p.ideal_momentum_axes[2]; }},
+    kFields[3]};
+
+std::span<const FieldChoice> fields_of(int dimension) {
+  return dimension == 3 ? std::span<const FieldChoice>(kFields3d) : std::span<const FieldChoice>(kFields);
+}
+
+// The shell-averaged spectra of 3D files: name, and the member of ShellStructureFactor.
+constexpr std::pair<const char*, const std::vector<double> ShellStructureFactor::*> kShellAverages[] = {
+    {"S_R", &ShellStructureFactor::density}, {"S_R_sd", &ShellStructureFactor::density_sd},
+    {"S_P", &ShellStructureFactor::momentum}, {"S_P_sd", &ShellStructureFactor::momentum_sd}};
 
 // The spectra file as it grows: `<out>.partial`, flushed after its layout and after every frame,
 // given its final name only once its close succeeded (h5::PartialFile); a failure leaves the
@@ -106,7 +128,10 @@ class SpectraFile {
  public:
   SpectraFile(const std::string& path, const SpectraOptions& options, const SnapshotMetadata& metadata,
               const TransformOptions& transform, double dk, const AnnulusSpectrum& bins)
-      : partial_(path, kFormat, kFormatVersion, kVersion), file_(partial_.get()) {
+      : partial_(path, kFormat, kFormatVersion, kVersion),
+        file_(partial_.get()),
+        depth_(metadata.system.dimension == 3),
+        rings_(depth_ ? "shell_" : "annulus_") {
     write_layout(options, metadata, transform, dk, bins);
     partial_.flush();
   }
@@ -129,9 +154,10 @@ class SpectraFile {
     write_string_attribute(file_, "normalization", "rho(k) = (1/2pi) sum_j exp(i k.r_j), p(k) = (1/2pi) sum_j v_j exp(i k.r_j) (thesis 3.4-3.5)");
     write_attribute(file_, "particles", H5T_NATIVE_INT64, &s.particles);
     write_attribute(file_, "diameter", H5T_NATIVE_DOUBLE, &s.diameter);
-    const double box[2] = {s.length_x, s.length_y};
-    write_attribute(file_, "box", H5T_NATIVE_DOUBLE, box, 2);
-    write_attribute(file_, "area_fraction", H5T_NATIVE_DOUBLE, &metadata.packing_fraction);
+    const double box[3] = {s.length_x, s.length_y, s.length_z};
+    write_attribute(file_, "box", H5T_NATIVE_DOUBLE, box, depth_ ? 3 : 2);
+    write_attribute(file_, depth_ ? "packing_fraction" : "area_fraction", H5T_NATIVE_DOUBLE, &metadata.packing_fraction);
+    if (depth_) write_attribute(file_, "dimension", H5T_NATIVE_INT, &s.dimension);
     write_attribute(file_, "restitution", H5T_NATIVE_DOUBLE, &s.restitution);
     write_string_attribute(file_, "boundary", metadata.boundary);
     write_attribute(file_, "shear_velocity", H5T_NATIVE_DOUBLE, &s.shear_velocity);
@@ -141,22 +167,34 @@ class SpectraFile {
 
     const auto side = static_cast<hsize_t>(2 * transform.max_mode + 1);
     const auto rings = static_cast<hsize_t>(bins.k.size());
-    write_dataset(file_, "annulus_k", {rings}, bins.k);
+    write_dataset(file_, (rings_ + "k").c_str(), {rings}, bins.k);
     for (const char* name : {"frame_index", "collisions_per_particle", "time", "shear_offset", "tilt"}) {
       add_frames(file_, name, std::string(name) == "frame_index" ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
     }
     add_frames(file_, "kx", H5T_IEEE_F64LE, {side, side});
     add_frames(file_, "ky", H5T_IEEE_F64LE, {side, side});
-    add_frames(file_, "annulus_modes", H5T_STD_I64LE, {rings});
+    add_frames(file_, (rings_ + "modes").c_str(), H5T_STD_I64LE, {rings});
+    if (depth_) {
+      add_frames(file_, "shell_P_modes", H5T_STD_I64LE, {rings});
+      for (const auto& [name, member] : kShellAverages) add_frames(file_, name, H5T_IEEE_F64LE, {rings});
+      for (const char* name : {"ideal_R", "ideal_P"}) add_frames(file_, name, H5T_IEEE_F64LE, {});
+    }
     Handle(create_group(file_, "dominant"), H5Gclose).close();
-    for (const FieldChoice& field : kFields) {
+    for (const FieldChoice& field : fields_of(s.dimension)) {
       add_frames(file_, field.name, H5T_IEEE_F64LE, {side, side});
-      add_frames(file_, (std::string("annulus_") + field.name).c_str(), H5T_IEEE_F64LE, {rings});
+      add_frames(file_, (rings_ + field.name).c_str(), H5T_IEEE_F64LE, {rings});
       const std::string group = std::string("dominant/") + field.name;
       Handle(create_group(file_, group.c_str()), H5Gclose).close();
-      for (const char* column : {"l", "m"}) add_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {});
+      for (const char* column : {"l", "m", "n"}) {
+        if (depth_ || column[0] != 'n') add_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {});
+      }
       for (const char* column : {"kx", "ky", "k", "angle_deg", "length", "power", "length_over_L0"}) {
         add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
+      }
+      if (depth_) {
+        for (const char* column : {"kz", "power_over_ideal_gas", "noise_p_value"}) {
+          add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
+        }
       }
     }
   }
@@ -165,26 +203,44 @@ class SpectraFile {
               const std::vector<DominantMode>& dominant, double l0) {
     using namespace h5;
     const auto k = static_cast<hsize_t>(partial_.frames());
+    // The plane n = 0 (k_z = 0) of a 3D map; the whole map in 2D.
+    const std::size_t plane = static_cast<std::size_t>(maps.modes.max_mode_z()) * maps.modes.plane_count();
     append_frame(file_, "frame_index", H5T_NATIVE_INT64, &index, k);
     append_frame(file_, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
     append_frame(file_, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
     append_frame(file_, "shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset, k);
     append_frame(file_, "tilt", H5T_NATIVE_DOUBLE, &maps.lattice.tilt, k);
-    append_frame(file_, "kx", H5T_NATIVE_DOUBLE, maps.kx.data(), k);
-    append_frame(file_, "ky", H5T_NATIVE_DOUBLE, maps.ky.data(), k);
-    append_frame(file_, "annulus_modes", H5T_NATIVE_INT64, annulus.modes.data(), k);
-    for (std::size_t f = 0; f < std::size(kFields); ++f) {
-      const FieldChoice& field = kFields[f];
-      append_frame(file_, field.name, H5T_NATIVE_DOUBLE, (maps.*field.map).data(), k);
-      append_frame(file_, (std::string("annulus_") + field.name).c_str(), H5T_NATIVE_DOUBLE, (annulus.*field.annulus).data(), k);
+    append_frame(file_, "kx", H5T_NATIVE_DOUBLE, maps.kx.data() + plane, k);
+    append_frame(file_, "ky", H5T_NATIVE_DOUBLE, maps.ky.data() + plane, k);
+    append_frame(file_, (rings_ + "modes").c_str(), H5T_NATIVE_INT64, annulus.modes.data(), k);
+    if (depth_) {
+      append_frame(file_, "shell_P_modes", H5T_NATIVE_INT64, annulus.momentum_modes.data(), k);
+      const ShellStructureFactor averages = shell_structure_factor(annulus, maps);
+      for (const auto& [name, member] : kShellAverages) append_frame(file_, name, H5T_NATIVE_DOUBLE, (averages.*member).data(), k);
+      const double ideal_momentum = maps.ideal_momentum();
+      append_frame(file_, "ideal_R", H5T_NATIVE_DOUBLE, &maps.ideal_density, k);
+      append_frame(file_, "ideal_P", H5T_NATIVE_DOUBLE, &ideal_momentum, k);
+    }
+    const std::span<const FieldChoice> fields = fields_of(maps.lattice.dimension);
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const FieldChoice& field = fields[f];
+      append_frame(file_, field.name, H5T_NATIVE_DOUBLE, (maps.*field.map).data() + plane, k);
+      append_frame(file_, (rings_ + field.name).c_str(), H5T_NATIVE_DOUBLE, (annulus.*field.annulus).data(), k);
       const std::string group = std::string("dominant/") + field.name + "/";
       const DominantMode& d = dominant[f];
       const double ratio = d.length / l0;
       append_frame(file_, (group + "l").c_str(), H5T_NATIVE_INT, &d.l, k);
       append_frame(file_, (group + "m").c_str(), H5T_NATIVE_INT, &d.m, k);
+      if (depth_) append_frame(file_, (group + "n").c_str(), H5T_NATIVE_INT, &d.n, k);
       for (const auto& [column, value] : {std::pair{"kx", &d.kx}, {"ky", &d.ky}, {"k", &d.k}, {"angle_deg", &d.angle_deg},
                                           {"length", &d.length}, {"power", &d.power}, {"length_over_L0", &ratio}}) {
         append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
+      }
+      if (depth_) {
+        for (const auto& [column, value] : {std::pair{"kz", &d.kz}, {"power_over_ideal_gas", &d.power_over_ideal_gas},
+                                            {"noise_p_value", &d.noise_p_value}}) {
+          append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
+        }
       }
     }
     partial_.end_frame();
@@ -194,6 +250,8 @@ class SpectraFile {
  private:
   h5::PartialFile partial_;
   hid_t file_;  // partial_'s identifier, owned by it
+  bool depth_;         // a 3D run
+  std::string rings_;  // "annulus_" (2D) or "shell_" (3D)
 };
 
 int bad_input(const std::string& message) {
@@ -203,9 +261,6 @@ int bad_input(const std::string& message) {
 
 int analyze_spectra(const SpectraOptions& options) {
   // 1. Everything that can be wrong with the input is found before anything is written.
-  if (options.max_mode < 1 || options.max_mode > kMaxModeLimit) {
-    return bad_input(fmt::format("--max-mode must be in [1, {}] (got {})", kMaxModeLimit, options.max_mode));
-  }
   if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
     return bad_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
   }
@@ -222,16 +277,23 @@ int analyze_spectra(const SpectraOptions& options) {
   const std::vector<std::int64_t> frames = parse_frames(options.frames, first.frames, error);
   if (!error.empty()) return bad_input(error);
   const SnapshotMetadata& metadata = first.metadata;
+  const int dimension = metadata.system.dimension;
+  const double length_z = metadata.system.length_z;
+  const int max_mode = options.max_mode.value_or(dimension == 3 ? kDefaultMaxMode3d : kDefaultMaxMode);
+  const int max_mode_limit = dimension == 3 ? kMaxModeLimit3d : kMaxModeLimit;
+  if (max_mode < 1 || max_mode > max_mode_limit) {
+    return bad_input(fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit, dimension, max_mode));
+  }
   const ShearFrame box{metadata.system.length_x, metadata.system.length_y, metadata.system.shear_velocity};
   if (options.subtract_shear && !box.sheared()) {
     return bad_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
   TransformOptions transform;
-  transform.max_mode = options.max_mode;
+  transform.max_mode = max_mode;
   transform.method = options.method == "exact" ? SpectralMethod::exact : SpectralMethod::fast;
   transform.subtract_shear_profile = options.subtract_shear;
-  const double dk = options.dk.value_or(default_annulus_width(lattice_for_frame(box, 0.0)));
-  const double radius = complete_radius_at_any_strain(box, options.max_mode);
+  const double dk = options.dk.value_or(default_annulus_width(lattice_for_frame(box, 0.0, dimension, length_z)));
+  const double radius = complete_radius_at_any_strain(box, max_mode, dimension, length_z);
   const std::string csv_path = !options.csv.empty() ? options.csv
                                : std::filesystem::path(options.out).replace_extension("").string() + "_dominant.csv";
   const double l0 = cluster_length(metadata.system);
@@ -239,25 +301,38 @@ int analyze_spectra(const SpectraOptions& options) {
   // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
   try {
     std::unique_ptr<SpectraFile> file;
-    std::string csv = "frame,t,c,shear_offset,field,l,m,kx,ky,k,angle_deg,length,power,length_over_L0\n";
+    const bool depth = dimension == 3;
+    std::string csv = depth ? "frame,t,c,shear_offset,field,l,m,n,kx,ky,kz,k,angle_deg,length,power,length_over_L0,"
+                              "power_over_ideal_gas,noise_p_value\n"
+                            : "frame,t,c,shear_offset,field,l,m,kx,ky,k,angle_deg,length,power,length_over_L0\n";
     for (const std::int64_t index : frames) {
       const SnapshotRead snapshot = index == 0 ? first : read_snapshot(options.snapshots, index);
       const SnapshotFrame& frame = snapshot.frame;
-      const PowerMaps maps = power_maps(transform_fields(frame.particles, box, frame.shear_offset, transform),
-                                        options.exclude_ky_axis);
+      const ReciprocalLattice lattice = lattice_for_frame(box, frame.shear_offset, dimension, length_z);
+      const PowerMaps maps = power_maps(transform_fields(frame.particles, box, lattice, transform), options.exclude_ky_axis);
       const AnnulusSpectrum annulus = annulus_sums(maps, dk, radius);
       if (!file) file = std::make_unique<SpectraFile>(options.out, options, metadata, transform, dk, annulus);
       std::vector<DominantMode> dominant;
-      for (const FieldChoice& field : kFields) {
-        const DominantMode& d = dominant.emplace_back(dominant_mode(maps, maps.*field.map));
-        csv += fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
-                           index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name, d.l,
-                           d.m, d.kx, d.ky, d.k, d.angle_deg, d.length, d.power, d.length / l0);
+      for (const FieldChoice& field : fields_of(dimension)) {
+        const DominantMode& d = dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.ideal_level(maps)));
+        csv += depth ? fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+                                   "{:.17g},{:.17g},{:.17g},{:.17g}\n",
+                                   index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name,
+                                   d.l, d.m, d.n, d.kx, d.ky, d.kz, d.k, d.angle_deg, d.length, d.power, d.length / l0,
+                                   d.power_over_ideal_gas, d.noise_p_value)
+                     : fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
+                                   index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name,
+                                   d.l, d.m, d.kx, d.ky, d.k, d.angle_deg, d.length, d.power, d.length / l0);
       }
       file->append(index, frame, maps, annulus, dominant, l0);
-      fmt::print("frame {} (t = {:.6g}, c = {:.6g}): dominant R mode 2π/|k| = {:.4g} at {:.1f}°, {:.3g} L0\n", index,
+      fmt::print("frame {} (t = {:.6g}, c = {:.6g}): dominant R mode 2π/|k| = {:.4g} at {:.1f}°, {:.3g} L0", index,
                  frame.clock.time, frame.collisions_per_particle, dominant[0].length, dominant[0].angle_deg,
                  dominant[0].length / l0);
+      if (depth) {
+        fmt::print(" (k_z = {:.4g}; {:.3g} × the uncorrelated level, noise p = {:.2g})", dominant[0].kz,
+                   dominant[0].power_over_ideal_gas, dominant[0].noise_p_value);
+      }
+      fmt::print("\n");
     }
     write_file_atomically(csv_path, csv);
     file->publish();
@@ -278,21 +353,23 @@ int analyze_spectra(const SpectraOptions& options) {
 void add_analyze_spectra(CLI::App& analyze) {
   auto options = std::make_shared<SpectraOptions>();
   CLI::App* command = analyze.add_subcommand(
-      "spectra", "Fourier spectra of the mass and momentum densities (thesis §2.2, §3.2.1): power maps, annulus sums "
-                 "against |k| and the dominant wavevector against L0 = l/sqrt(1-e^2). Schema: docs/spectra.md");
+      "spectra", "Fourier spectra of the mass and momentum densities (thesis §2.2, §3.2.1), 2D or 3D runs: power maps, "
+                 "annulus (shell) sums against |k| and the dominant wavevector against L0 = l/sqrt(1-e^2). Schema: "
+                 "docs/spectra.md");
   command->add_option("snapshots", options->snapshots, "snapshots.h5 of a run")->required();
   command->add_option("--frames", options->frames,
                       "Frames: 'all', indices (negative from the end) and slices start:stop[:step], comma-separated")
       ->default_val("all");
-  command->add_option("--max-mode", options->max_mode, "Modes |l|, |m| <= M of the allowed lattice k = l k1 + m k2")
-      ->default_val(64);
-  command->add_option("--dk", options->dk, "Annulus width (default 2*pi/max(Lx, Ly))");
+  command->add_option("--max-mode", options->max_mode,
+                      "Modes |l|, |m| (, |n|) <= M of the allowed lattice k = l k1 + m k2 (+ n k3); default 64 in 2D "
+                      "(at most 2048), 32 in 3D (at most 256)");
+  command->add_option("--dk", options->dk, "Annulus (shell) width (default 2*pi/max(Lx, Ly (, Lz)))");
   command->add_option("--method", options->method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
       ->default_val("fast");
   command->add_flag("--subtract-shear", options->subtract_shear,
                     "Momentum relative to the linear shear profile, p'(k) of (3.17) (Lees-Edwards runs)");
   command->add_flag("--exclude-ky-axis", options->exclude_ky_axis,
-                    "Leave the k_y axis (l = 0) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
+                    "Leave the k_y axis (l = 0, and n = 0 in 3D) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
   command->add_option("--out", options->out, "Output HDF5 file")->default_val("spectra.h5");
   command->add_option("--csv", options->csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
   command->callback([options] { throw CLI::RuntimeError(analyze_spectra(*options)); });

@@ -4,35 +4,52 @@
 #include <limits>
 #include <numbers>
 
+#include "theory/hard_spheres.hpp"
+
 namespace granule::spectra {
 
-DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power) {
+DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, double ideal_level) {
   const std::size_t origin = maps.modes.index(0, 0);
-  std::size_t best = origin;
+  std::size_t best = origin, included = 0;
   for (std::size_t i = 0; i < power.size(); ++i) {
-    if (i != origin && !std::isnan(power[i]) && (best == origin || power[i] > power[best])) best = i;
+    if (i == origin || std::isnan(power[i])) continue;
+    ++included;
+    if (best == origin || power[i] > power[best]) best = i;
   }
   DominantMode mode;
   if (best == origin) return mode;
-  const int side = maps.modes.side();
-  mode.l = static_cast<int>(best % static_cast<std::size_t>(side)) - maps.modes.max_mode;
-  mode.m = static_cast<int>(best / static_cast<std::size_t>(side)) - maps.modes.max_mode;
+  const auto side = static_cast<std::size_t>(maps.modes.side());
+  mode.l = static_cast<int>(best % side) - maps.modes.max_mode;
+  mode.m = static_cast<int>(best / side % side) - maps.modes.max_mode;
+  mode.n = static_cast<int>(best / maps.modes.plane_count()) - maps.modes.max_mode_z();
   mode.kx = maps.kx[best];
   mode.ky = maps.ky[best];
-  if (mode.ky < 0.0 || (mode.ky == 0.0 && mode.kx < 0.0)) {
+  if (!maps.kz.empty()) mode.kz = maps.kz[best];
+  if (mode.ky < 0.0 || (mode.ky == 0.0 && (mode.kx < 0.0 || (mode.kx == 0.0 && mode.kz < 0.0)))) {
     mode.l = -mode.l;
     mode.m = -mode.m;
+    mode.n = -mode.n;
     mode.kx = -mode.kx;
     mode.ky = -mode.ky;
+    mode.kz = -mode.kz + 0.0;
   }
-  mode.k = std::hypot(mode.kx, mode.ky);
+  mode.k = maps.kz.empty() ? std::hypot(mode.kx, mode.ky) : std::hypot(mode.kx, mode.ky, mode.kz);
   mode.angle_deg = std::atan2(mode.ky, mode.kx) * 180.0 / std::numbers::pi + 0.0;  // + 0.0 turns −0° into 0°
   mode.length = 2.0 * std::numbers::pi / mode.k;
   mode.power = power[best];
+  if (ideal_level > 0.0) {
+    mode.power_over_ideal_gas = mode.power / ideal_level;
+    const double independent = 0.5 * static_cast<double>(included);  // S(−k) = S(k)*: pairs
+    mode.noise_p_value = -std::expm1(independent * std::log1p(-std::exp(-mode.power_over_ideal_gas)));
+  }
   return mode;
 }
 
 double mean_free_path(const SystemParams& system) {
+  if (system.dimension == 3) {
+    const double density = static_cast<double>(system.particles) / (system.length_x * system.length_y * system.length_z);
+    return theory::hard_sphere_mean_free_path(3, density, system.diameter, 1.0);
+  }
   return system.length_x * system.length_y / (2.0 * static_cast<double>(system.particles) * system.diameter);
 }
 

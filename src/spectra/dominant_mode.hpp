@@ -1,5 +1,7 @@
-// The dominant wavevector of a power map and the cluster length scale it is compared with:
-// L0 = l/√(1 − ẽ²) (eq 1.1, 3.18) with the mean free path l = L_x L_y/(2Nσ) of §3.1.2.
+// The dominant wavevector of a power map, how far it stands above the noise of uncorrelated positions,
+// and the cluster length scale it is compared with: L0 = l/√(1 − ẽ²) (eq 1.1, 3.18) with the mean free
+// path l = L_x L_y/(2Nσ) of §3.1.2 for disks; for spheres the same formula with the Boltzmann mean free
+// path of theory/hard_spheres.hpp, l = 1/(√2 π n σ²), n = N/(L_x L_y L_z) (the thesis gives no 3D l).
 #pragma once
 
 #include <vector>
@@ -10,19 +12,27 @@
 namespace granule::spectra {
 
 struct DominantMode {
-  int l = 0, m = 0;         // lattice indices, chosen with angle in [0°, 180°)
-  double kx = 0.0, ky = 0.0;
+  int l = 0, m = 0, n = 0;  // lattice indices (n = 0 in 2D), chosen with angle in [0°, 180°)
+  double kx = 0.0, ky = 0.0, kz = 0.0;
   double k = 0.0;           // |k|
-  double angle_deg = 0.0;   // of k from the +k_x axis, in [0°, 180°): 135° ⇔ structures along 45°
+  double angle_deg = 0.0;   // of (k_x, k_y) from the +k_x axis, in [0°, 180°): 135° ⇔ structures along 45°
   double length = 0.0;      // 2π/|k|: the dominant length scale
   double power = 0.0;
+  // power / ⟨power⟩ of uncorrelated positions, and the chance that uncorrelated positions put at least
+  // this much into some mode: each of the K independent modes (pairs ±k) of such a gas carries an
+  // exponentially distributed power of that mean, so p = 1 − (1 − e^{−s})^K for s = power_over_ideal_gas.
+  // Exact (for large N) for R and for one momentum component; for P, a sum of d components whose tail
+  // beyond s ≳ 2 is thinner than e^{−s}, it overstates p (a conservative significance).
+  double power_over_ideal_gas = 0.0;
+  double noise_p_value = 1.0;
 };
 
-// The mode of largest power among all computed modes except k = 0 and excluded (NaN) ones.  Power is
-// even in k, so of the pair ±k the one with angle in [0°, 180°) is returned.
-DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power);
+// The mode of largest power among all computed modes except k = 0 and excluded (NaN) ones; `ideal_level`
+// is the field's mean power for uncorrelated positions.  Power is even in k, so of the pair ±k the one
+// with k_y > 0 (or k_y = 0 and k_x > 0, or k ∥ +ẑ) is returned.
+DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, double ideal_level = 0.0);
 
-double mean_free_path(const SystemParams& system);   // l = L_x L_y / (2Nσ)  (§3.1.2)
+double mean_free_path(const SystemParams& system);   // l: 2D (§3.1.2) or 3D (Boltzmann), above
 double cluster_length(const SystemParams& system);   // L0 = l/√(1 − ẽ²) (1.1); +∞ when ẽ = 1
 
 }  // namespace granule::spectra
