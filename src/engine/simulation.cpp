@@ -38,7 +38,7 @@ Vec<D> Simulation<D>::velocity(std::int32_t i) const {
 template <int D>
 std::array<int, D> Simulation<D>::cell_coordinates(std::int32_t cell) const {
   if constexpr (D == 2) {
-    return {grid_.column_of(cell), grid_.row_of(cell)};
+    return {grid_.column_of(cell), cell / grid_.nx};  // one division fewer than row_of's
   } else {
     return {grid_.column_of(cell), grid_.row_of(cell), grid_.layer_of(cell)};
   }
@@ -272,6 +272,8 @@ typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) con
   // Collisions with the particles of the 3^D block of cells.
   std::int32_t partner = -1;
   double best = kInf;
+  const bool polydisperse = !diameter_.empty();
+  const double sigma = params_.diameter;
   for_each_neighbour(i, [&](std::int32_t j, const Vector& shift, double shift_vx) {
     const double dt_j = t_now_ - t_[at(j)];
     Vector rel_position;
@@ -280,7 +282,8 @@ typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) con
       rel_position[a] = position_[a][at(j)] + velocity_[a][at(j)] * dt_j + shift[a] - ri[a];
       rel_velocity[a] = a == 0 ? velocity_[a][at(j)] + shift_vx - vi[a] : velocity_[a][at(j)] - vi[a];
     }
-    if (const double t = collision_time(rel_position, rel_velocity, contact_distance(i, j)); t < best) {
+    const double contact = polydisperse ? contact_distance(i, j) : sigma;
+    if (const double t = collision_time(rel_position, rel_velocity, contact); t < best) {
       best = t;
       partner = j;
     }

@@ -165,7 +165,8 @@ class Simulation {
     }
     double delay() const { return std::min(collision_delay, crossing.delay); }
   };
-  Prediction next_event(std::int32_t i) const;
+  // Flattened: the neighbour loop, its visitor and the pair test inline into one loop (the hot path).
+  [[gnu::flatten]] Prediction next_event(std::int32_t i) const;
   // The first cell face particle i (now at `position`) reaches.
   Crossing next_crossing(std::int32_t i, const Vector& position) const;
   // Where the box's image one period away across a face sits relative to the box, and how fast
@@ -229,6 +230,20 @@ class Simulation {
   std::int64_t events_ = 0;
   std::int64_t events_since_rebase_ = 0;
 };
+
+template <int D>
+inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, int direction, double strain) const {
+  FaceImage image{};
+  if (axis == 1) {
+    const ImageShift shift = frame_.image_shift(0, direction, strain);
+    image.position[0] = shift.position.x;
+    image.position[1] = shift.position.y;
+    image.velocity_x = shift.velocity_x;
+  } else {
+    image.position[axis] = direction * (axis == 0 ? params_.length_x : params_.length_z);
+  }
+  return image;
+}
 
 template <int D>
 template <typename Visit>

@@ -78,20 +78,6 @@ void Simulation<D>::realign_sheared_grid() {
 }
 
 template <int D>
-typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, int direction, double strain) const {
-  FaceImage image{};
-  if (axis == 1) {
-    const ImageShift shift = frame_.image_shift(0, direction, strain);
-    image.position[0] = shift.position.x;
-    image.position[1] = shift.position.y;
-    image.velocity_x = shift.velocity_x;
-  } else {
-    image.position[axis] = direction * (axis == 0 ? params_.length_x : params_.length_z);
-  }
-  return image;
-}
-
-template <int D>
 typename Simulation<D>::PartnerImage Simulation<D>::nearest_image(const Vector& offset) const {
   // The nearest image in the sheared frame, unambiguous because cells are at least as large as
   // a contact pair (cell_grid.hpp).
