@@ -95,6 +95,11 @@ int analyze_f1(const F1CommandOptions& o) {
     return bad_input(fmt::format("cannot read snapshots '{}': {}", o.snapshots, error.what()));
   }
   const SystemParams& system = first.metadata.system;
+  // Cumulative sampling of Chapter 5 is written for the velocity plane of disks.
+  if (system.dimension != 2) {
+    return bad_input(fmt::format("'{}' is a {}D run: the velocity distribution f1 is measured in 2D runs only", o.snapshots,
+                                 system.dimension));
+  }
   if (o.from_frame < 0 || o.from_frame >= first.frames)
     return bad_input(fmt::format("--from-frame must be in [0, {}) for this file (got {})", first.frames, o.from_frame));
   SamplingOptions sampling;

@@ -104,4 +104,9 @@ for key, value, needle in [("engine.cells", "[4, 4]", "engine.cells"),
     check(result.returncode == 2 and needle in result.stderr, f"3D run refuses {key} (exit {result.returncode}: {result.stderr.strip()[:160]})")
     check(not (WORK / "refused" / "snapshots.h5").exists(), f"nothing written when {key} is refused")
 
+result = granule("analyze", "f1", str(WORK / "spheres_elastic" / "snapshots.h5"), "--density-window", "1500+-1000",
+                 "--temperature-window", "1+-1", "--out", str(WORK / "f1.h5"))
+check(result.returncode == 2 and "2D runs only" in result.stderr and not (WORK / "f1.h5").exists(),
+      f"analyze f1 refuses a 3D run (exit {result.returncode}: {result.stderr.strip()[:160]})")
+
 finish()
