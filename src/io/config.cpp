@@ -134,7 +134,7 @@ RunConfig resolve(const toml::table& root) {
   if (s.dimension == 3) {
     for (const char* key : {"engine.cells", "diagnostics.cells", "fields.cells"}) {
       if (in.has(key)) throw ConfigError{fmt::format("{} is for 2D runs only: with system.dimension = 3 the grid is chosen "
-                                                     "automatically (~1 sphere per engine cell, ~20 per field cell)", key)};
+                                                     "automatically (engine.particles_per_cell spheres per engine cell, ~20 per field cell)", key)};
     }
   }
   c.engine_cells = in.int_pair("engine.cells", 3, 1 << 15);
