@@ -180,7 +180,11 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   }
 }
 
-template class Simulation<2>;
-template class Simulation<3>;
+// The members defined in this file, for both dimensions (the class is instantiated in
+// simulation.cpp, once).
+template void Simulation<2>::save(StateArchive&, const std::string&) const;
+template Simulation<2>::Simulation(const SystemParams&, const CellGrid&, const StateArchive&, const std::string&);
+template void Simulation<3>::save(StateArchive&, const std::string&) const;
+template Simulation<3>::Simulation(const SystemParams&, const CellGrid&, const StateArchive&, const std::string&);
 
 }  // namespace granule

@@ -106,7 +106,11 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   }
 }
 
-template class Simulation<2>;
-template class Simulation<3>;
+// The members defined in this file, for both dimensions (the class is instantiated in
+// simulation.cpp, once).
+template void Simulation<2>::check_invariants() const;
+template void Simulation<2>::check_popped_event(std::int32_t) const;
+template void Simulation<3>::check_invariants() const;
+template void Simulation<3>::check_popped_event(std::int32_t) const;
 
 }  // namespace granule

@@ -110,7 +110,23 @@ void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
   for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
 
-template class Simulation<2>;
-template class Simulation<3>;
+// The members defined in this file, for both dimensions (the class is instantiated in
+// simulation.cpp, once).
+template double Simulation<2>::shear_offset() const;
+template void Simulation<2>::schedule_realignment();
+template void Simulation<2>::enter_shear_segment(const ShearSegment&);
+template void Simulation<2>::change_image_velocity(double);
+template void Simulation<2>::repredict_after_shear_change();
+template void Simulation<2>::realign_sheared_grid();
+template Simulation<2>::PartnerImage Simulation<2>::nearest_image(const Vec<2>&) const;
+template void Simulation<2>::enter_from_image(std::int32_t, int);
+template double Simulation<3>::shear_offset() const;
+template void Simulation<3>::schedule_realignment();
+template void Simulation<3>::enter_shear_segment(const ShearSegment&);
+template void Simulation<3>::change_image_velocity(double);
+template void Simulation<3>::repredict_after_shear_change();
+template void Simulation<3>::realign_sheared_grid();
+template Simulation<3>::PartnerImage Simulation<3>::nearest_image(const Vec<3>&) const;
+template void Simulation<3>::enter_from_image(std::int32_t, int);
 
 }  // namespace granule
