@@ -35,9 +35,7 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
                        const ClockState& clock)
     : config_(config), grid_(grid), out_(std::move(out)) {
   // The elastic pre-run of thesis §1.4.2; the restitution is switched on when it ends.
-  SystemParams elastic = config.system;
-  elastic.restitution = 1.0;
-  sim_ = std::make_unique<Simulation<D>>(elastic, grid, initial, clock);
+  sim_ = std::make_unique<Simulation<D>>(elastic_prerun(config.system), grid, initial, clock);
   equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
@@ -83,7 +81,7 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
 template <int D>
 void RunSession<D>::start_production() {
   const SystemParams& system = config_.system;
-  sim_->start_production(system.restitution);
+  sim_->start_production(system);
   segment_start_collisions_ = 0;
   diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
   sim_->add_observer(diagnostics_.get());

@@ -33,6 +33,29 @@ struct CollisionRecord {
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves
                                  // at v_x + image_y U relative to disk 2 itself (§1.4.2)
   double image_velocity_x = 0.0; // that image's velocity relative to disk 2: image_y U at contact
+  // Rough grains only (zero for smooth ones): the tangential part of the momentum given to disk 2
+  // (the whole impulse is impulse·k̂ + tangential_impulse), and the change of the pair's total
+  // kinetic energy, translational plus rotational (≤ 0; 0 for smooth grains: use the impulse).
+  Vec<D> tangential_impulse;
+  double rough_energy_change = 0.0;
+};
+
+// A grain hitting a flat wall (SystemParams::walls): the wall at face 2·axis + side (side 0 at
+// coordinate 0, 1 at L) takes the momentum `impulse_on_wall` and gives the grain the energy
+// `energy_change` (translational plus rotational; > 0 when a moving or rough wall heats the gas).
+template <int D>
+struct WallCollisionRecord {
+  double time = 0.0;
+  std::int32_t particle = 0;
+  int axis = 1;
+  int side = 0;
+  Vec<D> position;                // lab position of the grain's centre at contact
+  Vec<D> velocity_before;
+  Vec<D> velocity_after;
+  Vec<D> impulse_on_wall;         // m (v_before − v_after)
+  double energy_change = 0.0;
+  double restitution = 1.0;       // the e_w applied (1 inside the TC model's window)
+  double mass = 1.0;
 };
 
 // A disk leaving through the top or bottom of a Lees–Edwards box re-enters from the image on the
@@ -52,6 +75,7 @@ class EventObserver {
   virtual ~EventObserver() = default;
   virtual void on_collision(const CollisionRecord<D>& record) = 0;
   virtual void on_boundary_crossing(const BoundaryCrossingRecord&) {}
+  virtual void on_wall_collision(const WallCollisionRecord<D>&) {}
 };
 
 }  // namespace granule

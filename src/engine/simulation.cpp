@@ -213,8 +213,10 @@ ClockState Simulation<D>::clock_state() const {
 }
 
 template <int D>
-void Simulation<D>::start_production(double restitution) {
-  params_.restitution = restitution;
+void Simulation<D>::start_production(const SystemParams& production) {
+  params_.restitution = production.restitution;
+  params_.roughness.tangential_restitution = production.roughness.tangential_restitution;
+  params_.wall = production.wall;
   clock_base_ = -t_now_;
   collisions_ = 0;
   events_ = 0;

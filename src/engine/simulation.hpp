@@ -80,9 +80,16 @@ class Simulation {
   ParticleState state() const;
   ClockState clock_state() const;
 
-  // Switch the restitution (the thesis's elastic pre-run ends here), restart t and c at 0 and
-  // start the shear protocol: from here on U follows U(t).
-  void start_production(double restitution);
+  // Switch on the restitutions of `production` (normal, tangential, walls: the thesis's elastic
+  // pre-run ends here), restart t and c at 0 and start the shear protocol: from here on U follows
+  // U(t).
+  void start_production(const SystemParams& production);
+  // The same with only the normal restitution changed (the other restitutions stay as they are).
+  void start_production(double restitution) {
+    SystemParams production = params_;
+    production.restitution = restitution;
+    start_production(production);
+  }
 
   // Checks every invariant of the engine — no overlaps beyond round-off, each disk in the cell
   // its position gives, lists and heap consistent, every pending event still valid and not

@@ -2,13 +2,36 @@
 // (unit mass; lengths in the units of the box; time in the units implied by the velocities).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include "boundary/shear_protocol.hpp"
 
 namespace granule {
+
+// A flat wall at one end of an axis (thesis Appendix A.1, "reflective boundaries"): a grain touches
+// it when its centre is one radius away.  The wall moves tangentially at `velocity` (a wall-driven
+// Couette flow moves the y walls at ±U/2 along x) and reflects the grain's velocity relative to it
+// at the contact point: normal part × −restitution, tangential part × −tangential_restitution.
+struct WallParams {
+  double restitution = 1.0;              // e_w ∈ (0, 1]
+  double tangential_restitution = -1.0;  // β_w ∈ [−1, 1]: −1 a smooth wall, +1 a perfectly rough one
+  std::array<double, 3> velocity{};      // tangential: its component along the wall's axis is 0
+};
+
+// Rough grains (Lun 1991, the collision model of thesis Fig C.4): spin, a moment of inertia
+// I = q m σ²/4, and the tangential restitution β of the contact points' relative velocity,
+// optionally capped by Coulomb friction μ (Walton's model: the tangential impulse never exceeds
+// μ times the normal one).
+struct RoughnessParams {
+  bool rough = false;                    // grains carry spin (else smooth: β = −1, no spin)
+  double tangential_restitution = -1.0;  // β ∈ [−1, 1]
+  double inertia_factor = 0.5;           // q: ½ for uniform disks, 2/5 for uniform spheres
+  double friction = std::numeric_limits<double>::infinity();  // μ ≥ 0; +inf: no Coulomb limit
+};
 
 struct SystemParams {
   std::int64_t particles = 0;
@@ -27,18 +50,52 @@ struct SystemParams {
   ShearHistory shear_history;
   int dimension = 2;            // d: disks (2) or spheres (3)
   double length_z = 1.0;        // L_z (vorticity direction, 3D only)
+  // Per axis (x, y, z): flat walls at both ends (0 and L) instead of periodic images; y walls
+  // exclude Lees–Edwards images (a wall-driven flow moves the walls instead).
+  std::array<bool, 3> walls{};
+  std::array<WallParams, 6> wall;  // per face 2·axis + side (0: at 0, 1: at L)
+  std::array<double, 3> gravity{};  // uniform acceleration g (parabolic flights)
+  RoughnessParams roughness;
+
+  bool has_walls() const { return walls[0] || walls[1] || walls[2]; }
+  bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }
 };
+
+// The parameters of the thesis's elastic pre-run (§1.4.2): every collision elastic and smooth, with
+// grains and with walls (spins are kept but not exchanged; moving smooth walls do no work).
+// Simulation::start_production switches the production values on.
+inline SystemParams elastic_prerun(SystemParams params) {
+  params.restitution = 1.0;
+  params.roughness.tangential_restitution = -1.0;
+  for (WallParams& wall : params.wall) {
+    wall.restitution = 1.0;
+    wall.tangential_restitution = -1.0;
+  }
+  return params;
+}
 
 // Positions and velocities in the lab frame, one entry per particle: the exchange format between
 // the engine, initial states, files and analyses (which take the dimension at run time).
 // z and vz are empty in 2D; diameter and mass are empty for a monodisperse system (all σ =
-// SystemParams::diameter, unit mass).
+// SystemParams::diameter, unit mass); the angular velocities are empty for smooth grains, and a
+// disk spins about z only (wz), a sphere about any axis (wx, wy, wz).
 struct ParticleState {
   int dimension = 2;
   std::vector<double> x, y, z, vx, vy, vz;
   std::vector<double> diameter, mass;
+  std::vector<double> wx, wy, wz;
   std::size_t size() const { return x.size(); }
   bool polydisperse() const { return !diameter.empty(); }
+  bool rough() const { return !wz.empty(); }
+  // Components of the angular velocity: 1 for disks (ω_z), 3 for spheres.
+  int spin_components() const { return dimension == 3 ? 3 : 1; }
+  // Component k of the angular velocity: ω_z for disks; ω_x, ω_y, ω_z for spheres.
+  std::vector<double>& spin(int k) { return dimension == 2 || k == 2 ? wz : (k == 0 ? wx : wy); }
+  const std::vector<double>& spin(int k) const { return dimension == 2 || k == 2 ? wz : (k == 0 ? wx : wy); }
+  // Give every particle a zero angular velocity (the state of rough grains that have not spun yet).
+  void make_rough() {
+    for (int k = 0; k < spin_components(); ++k) spin(k).assign(size(), 0.0);
+  }
   void resize(std::size_t n) {
     x.resize(n);
     y.resize(n);
@@ -51,6 +108,9 @@ struct ParticleState {
     if (polydisperse()) {
       diameter.resize(n);
       mass.resize(n);
+    }
+    if (rough()) {
+      for (int k = 0; k < spin_components(); ++k) spin(k).resize(n);
     }
   }
   std::vector<double>& position(int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
