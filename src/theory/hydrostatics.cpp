@@ -63,9 +63,7 @@ double hydrostatic_bottom_packing_fraction(const HydrostaticColumn& column) {
   const double target = particle_volume(column.dimension, column.diameter) *
                         column.particles_per_floor_area / barometric_height(column);
   return increasing_root(
-      [&](double phi) {
-        return phi * hard_sphere_compressibility(column.dimension, phi) - target;
-      },
+      [&](double phi) { return phi * hard_sphere_compressibility(column.dimension, phi) - target; },
       0.0, 1.0);
 }
 

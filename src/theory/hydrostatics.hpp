@@ -24,11 +24,11 @@ double hard_sphere_excess_chemical_potential(int dimension, double packing_fract
 
 struct HydrostaticColumn {
   int dimension;
-  double diameter;                   // σ [length]
-  double mass;                       // m [mass]
-  double gravity;                    // g > 0 [length/time²], pointing to −y
-  double temperature;                // T
-  double particles_per_floor_area;   // N_A [1/length^{d−1}]
+  double diameter;                  // σ [length]
+  double mass;                      // m [mass]
+  double gravity;                   // g > 0 [length/time²], pointing to −y
+  double temperature;               // T
+  double particles_per_floor_area;  // N_A [1/length^{d−1}]
 };
 
 // The barometric height T/(m g) [length].

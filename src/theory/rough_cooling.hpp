@@ -64,11 +64,11 @@ RoughEnergyChange mean_energy_change_per_collision(int dimension, const RoughGra
 // (hard_sphere_collision_frequency; ∝ √T_tr). In 3D A = (1 − e²)/4 + η(1 − η), G√T = 4ω/3 and
 // the factor d/d_rot is 1; in 2D A = (1 − e²)/2 + η(1 − η), G√T = ω and the factor is 2.
 struct RoughCoolingCoefficients {
-  double translational_loss;              // A
-  double exchange;                        // B
-  double rotational_loss;                 // C
-  double rotational_factor;               // d/d_rot
-  double rate_per_collision_frequency;    // G √T_tr / ω = 2(d − 1)/d
+  double translational_loss;            // A
+  double exchange;                      // B
+  double rotational_loss;               // C
+  double rotational_factor;             // d/d_rot
+  double rate_per_collision_frequency;  // G √T_tr / ω = 2(d − 1)/d
 };
 RoughCoolingCoefficients rough_cooling_coefficients(int dimension, const RoughGrains& grains);
 

@@ -142,7 +142,8 @@ TEST(Hydrostatics, ProfileSolvesTheHydrostaticEquation) {
     }
     const std::vector<double> profile = th::hydrostatic_packing_fraction(column, heights);
     for (std::size_t i = 0; i < heights.size(); ++i)
-      EXPECT_NEAR(profile[i] / integrated[i], 1.0, 1e-8) << "d = " << d << ", y/h = " << heights[i] / h;
+      EXPECT_NEAR(profile[i] / integrated[i], 1.0, 1e-8)
+          << "d = " << d << ", y/h = " << heights[i] / h;
   }
 }
 

@@ -33,12 +33,13 @@ Vec contact_velocity(const Grain& g, const Vec& arm) { return g.velocity + g.spi
 
 struct ContactVelocity {
   double normal;   // g·n > 0 approaching
-  Vec tangential;  // the component of the relative contact velocity normal to n
+  Vec tangential;  // the part of the relative contact velocity perpendicular to n
 };
 
 // n is the unit vector from grain a to grain b.
 ContactVelocity relative_contact_velocity(const Grain& a, const Grain& b, const Vec& n) {
-  const Vec g = contact_velocity(a, 0.5 * a.diameter * n) - contact_velocity(b, -0.5 * b.diameter * n);
+  const Vec g =
+      contact_velocity(a, 0.5 * a.diameter * n) - contact_velocity(b, -0.5 * b.diameter * n);
   return {g.dot(n), g - g.dot(n) * n};
 }
 
@@ -78,10 +79,9 @@ TEST(RoughCollisionRule, EnergyChangeOfOneCollisionIsTheClosedForm) {
   std::mt19937_64 rng(4242);
   std::normal_distribution<double> gauss;
   for (int d : {2, 3}) {
-    for (const th::RoughGrains grains : {th::RoughGrains{0.7, 0.3, 0.4},
-                                         th::RoughGrains{0.95, -0.6, 0.5},
-                                         th::RoughGrains{1.0, 1.0, 2.0 / 5.0},
-                                         th::RoughGrains{0.2, 0.9, 1.0}}) {
+    for (const th::RoughGrains grains :
+         {th::RoughGrains{0.7, 0.3, 0.4}, th::RoughGrains{0.95, -0.6, 0.5},
+          th::RoughGrains{1.0, 1.0, 2.0 / 5.0}, th::RoughGrains{0.2, 0.9, 1.0}}) {
       for (int trial = 0; trial < 50; ++trial) {
         auto random_vec = [&](bool planar) {
           return Vec(gauss(rng), gauss(rng), planar ? 0.0 : gauss(rng));
@@ -96,8 +96,8 @@ TEST(RoughCollisionRule, EnergyChangeOfOneCollisionIsTheClosedForm) {
         const double before = total_energy(a, b);
         collide(a, b, n, grains.normal_restitution, grains.tangential_restitution);
         const double measured = total_energy(a, b) - before;
-        const double predicted = th::rough_collision_energy_change(
-            grains, a.mass, b.mass, g.normal, g.tangential.norm());
+        const double predicted = th::rough_collision_energy_change(grains, a.mass, b.mass, g.normal,
+                                                                   g.tangential.norm());
         EXPECT_NEAR(measured, predicted, 1e-12 * before) << "d = " << d << " trial " << trial;
         const ContactVelocity after = relative_contact_velocity(a, b, n);
         EXPECT_NEAR(after.normal, -grains.normal_restitution * g.normal, 1e-12);
@@ -181,9 +181,8 @@ TEST(RoughCollisionMonteCarlo, MaxwellianEnergyExchangePerCollision) {
           d, grains.normal_restitution, grains.tangential_restitution, grains.inertia_factor,
           translational.mean(), translational.standard_error(), predicted.translational,
           rotational.mean(), rotational.standard_error(), predicted.rotational);
-      for (const auto& [estimate, theory] :
-           {std::pair{&translational, predicted.translational},
-            std::pair{&rotational, predicted.rotational}}) {
+      for (const auto& [estimate, theory] : {std::pair{&translational, predicted.translational},
+                                             std::pair{&rotational, predicted.rotational}}) {
         EXPECT_LT(estimate->standard_error(), 4e-3 * t_tr);
         EXPECT_NEAR(estimate->mean(), theory, 5.0 * estimate->standard_error());
       }

@@ -53,8 +53,7 @@ TEST(RoughCooling, ElasticPerfectlyRoughGrainsConserveEnergyAndReachEquipartitio
       EXPECT_NEAR(k.rotational_loss, expected, 1e-15);
       EXPECT_NEAR(th::rough_temperature_ratio(d, grains), 1.0, 1e-15);
       const th::RoughTemperatures rates = th::rough_cooling_rates(d, grains, {2.5, 0.3}, 1.1);
-      EXPECT_NEAR(d * rates.translational +
-                      th::rotational_degrees_of_freedom(d) * rates.rotational,
+      EXPECT_NEAR(d * rates.translational + th::rotational_degrees_of_freedom(d) * rates.rotational,
                   0.0, 1e-14);
       EXPECT_LT(rates.translational, 0.0);  // energy flows into the cold spin
       const th::RoughTemperatures late =
@@ -92,9 +91,9 @@ TEST(RoughCooling, ThreeDimensionalTemperatureRatioIsThePrintedOne) {
   for (double e : {0.5, 0.8, 0.9, 0.99, 1.0}) {
     for (double beta : {-0.9, -0.5, 0.0, 0.5, 1.0}) {
       const double kappa = 0.4;
-      const double h = (1.0 + kappa) / (2.0 * kappa * (1.0 + beta)) *
-                       ((1.0 + kappa) * (1.0 - e * e) / (1.0 + beta) -
-                        (1.0 - kappa) * (1.0 - beta));
+      const double h =
+          (1.0 + kappa) / (2.0 * kappa * (1.0 + beta)) *
+          ((1.0 + kappa) * (1.0 - e * e) / (1.0 + beta) - (1.0 - kappa) * (1.0 - beta));
       const double printed = h + std::sqrt(1.0 + h * h);
       const double ratio = th::rough_temperature_ratio(3, {e, beta, kappa});
       std::printf("            %.2f  %+.2f  %.6f\n", e, beta, ratio);
@@ -113,8 +112,8 @@ TEST(RoughCooling, CoolingStateRatioIsStationaryAndAttracting) {
       const double ratio = th::rough_temperature_ratio(d, grains);
       const th::RoughTemperatures rates = th::rough_cooling_rates(d, grains, {1.0, ratio}, 2.0);
       std::printf("d = %d, e = %.2f, beta = %+.2f, q = %.2f: R = %.6f\n", d,
-                  grains.normal_restitution, grains.tangential_restitution,
-                  grains.inertia_factor, ratio);
+                  grains.normal_restitution, grains.tangential_restitution, grains.inertia_factor,
+                  ratio);
       EXPECT_GT(ratio, 0.0);
       EXPECT_NEAR(rates.rotational / ratio, rates.translational, 1e-13);
       for (double start : {0.0, 0.3, 5.0}) {
@@ -130,7 +129,8 @@ TEST(RoughCooling, CoolingStateRatioIsStationaryAndAttracting) {
 TEST(RoughCooling, ExactSolutionInCollisionsAgreesWithRungeKuttaOfThePerCollisionChanges) {
   // Each collision changes the pair's energies by the means of mean_energy_change_per_collision
   // and takes c = collisions/N up by 1/N: d(N d T_tr/2) = N dc ΔE_tr, so dT_tr/dc = 2ΔE_tr/d and
-  // dT_rot/dc = 2ΔE_rot/d_rot. RK4 with 10⁴ steps (truncation error ~10⁻¹⁰ over c = 20) against the matrix exponential.
+  // dT_rot/dc = 2ΔE_rot/d_rot. RK4 with 10⁴ steps (truncation error ~10⁻¹⁰ over c = 20) against
+  // the matrix exponential.
   for (int d : {2, 3}) {
     const double d_rot = th::rotational_degrees_of_freedom(d);
     for (const th::RoughGrains grains :
@@ -152,8 +152,9 @@ TEST(RoughCooling, ExactSolutionInCollisionsAgreesWithRungeKuttaOfThePerCollisio
       for (int s = 1; s <= steps; ++s) {
         const auto k1 = slope(t), k2 = slope(advance(t, k1, h / 2)),
                    k3 = slope(advance(t, k2, h / 2)), k4 = slope(advance(t, k3, h));
-        t.translational += h / 6 * (k1.translational + 2 * k2.translational +
-                                    2 * k3.translational + k4.translational);
+        t.translational +=
+            h / 6 *
+            (k1.translational + 2 * k2.translational + 2 * k3.translational + k4.translational);
         t.rotational +=
             h / 6 * (k1.rotational + 2 * k2.rotational + 2 * k3.rotational + k4.rotational);
         if (s % 2500 == 0) {
@@ -176,7 +177,8 @@ TEST(RoughCooling, SolutionInTimeFollowsTheSolutionInCollisions) {
          {th::RoughGrains{0.7, 0.2, 0.5}, th::RoughGrains{0.9, -0.5, 0.4}}) {
       const th::RoughTemperatures start{1.0, 3.0};
       auto inverse_rate = [&](double c) {
-        const double t_tr = th::rough_temperatures_after_collisions(d, grains, start, c).translational;
+        const double t_tr =
+            th::rough_temperatures_after_collisions(d, grains, start, c).translational;
         return 2.0 / (omega0 * std::sqrt(t_tr / start.translational));
       };
       for (double c_end : {0.5, 5.0, 30.0}) {
