@@ -1,4 +1,4 @@
-// granule: command-line entry point.  Each subcommand lives in its own file under src/app/.
+// granule's command line: builds the subcommands (each in its own file under src/app/) and runs one.
 // Whatever escapes a subcommand ends here with a one-line message (plain fprintf: it must not
 // throw when stderr itself fails) and a documented exit code (README.md), never an abort: 4 for
 // I/O failures (std::filesystem and fmt report theirs as std::system_error), 5 for memory, 1 for
@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/analyze_command.hpp"
+#include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
 #include "app/bench_command.hpp"
 #include "app/plot_command.hpp"
@@ -50,8 +51,9 @@ int run_command_line(CLI::App& app, int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int granule::app::run_granule(int argc, char** argv) {
   CLI::App app{"Granule: event-driven simulation and analysis of rapid granular flows of inelastic hard disks\n"
+               "and spheres "
                "(after M.-L. Tan, Microstructures and Macrostructures in Rapid Granular Flows, Princeton 1995)."};
   app.set_version_flag("--version", granule::kVersion);
   app.require_subcommand(1);
