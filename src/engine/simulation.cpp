@@ -8,6 +8,7 @@
 #include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
 #include "physics/crossing_time.hpp"
+#include "physics/rough_collision_rule.hpp"
 
 namespace granule {
 
@@ -21,17 +22,26 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
 template <int D>
-Vec<D> Simulation<D>::position_now(std::int32_t i) const {
-  const double dt = t_now_ - t_[at(i)];
+Vec<D> Simulation<D>::position_after(std::int32_t i, double dt) const {
   Vector r;
-  for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + velocity_[a][at(i)] * dt;
+  if (has_gravity_) {
+    for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + (velocity_[a][at(i)] + 0.5 * gravity_[a] * dt) * dt;
+  } else {
+    for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + velocity_[a][at(i)] * dt;
+  }
   return r;
 }
 
 template <int D>
-Vec<D> Simulation<D>::velocity(std::int32_t i) const {
+Vec<D> Simulation<D>::position_now(std::int32_t i) const {
+  return position_after(i, t_now_ - t_[at(i)]);
+}
+
+template <int D>
+Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
   Vector v;
   for (int a = 0; a < D; ++a) v[a] = velocity_[a][at(i)];
+  if (has_gravity_) v = v + (t_now_ - t_[at(i)]) * gravity_;
   return v;
 }
 
@@ -51,6 +61,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       grid_(grid),
       frame_{params.length_x, params.length_y, 0.0},
       protocol_(params.shear_velocity, params.shear_history) {
+  for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];
+  has_gravity_ = params.has_gravity();
   load(state);
   allocate_arrays();
   if (params.tc_duration > 0.0) {
@@ -97,13 +109,22 @@ double Simulation<D>::bytes_per_particle() const {
                       bytes(last_collision_) + bytes(kind_) + bytes(partner_) + bytes(partner_count_) +
                       bytes(collision_time_) + lists_.bytes() + heap_.bytes();
   for (int a = 0; a < D; ++a) total += bytes(position_[a]) + bytes(velocity_[a]);
+  for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
 
 template <int D>
 void Simulation<D>::advance(std::int32_t i) {
   const double dt = t_now_ - t_[at(i)];
-  for (int a = 0; a < D; ++a) position_[a][at(i)] += velocity_[a][at(i)] * dt;
+  if (has_gravity_) {
+    const Vector r = position_after(i, dt);
+    for (int a = 0; a < D; ++a) {
+      position_[a][at(i)] = r[a];
+      velocity_[a][at(i)] += gravity_[a] * dt;
+    }
+  } else {
+    for (int a = 0; a < D; ++a) position_[a][at(i)] += velocity_[a][at(i)] * dt;
+  }
   t_[at(i)] = t_now_;
 }
 
@@ -150,11 +171,18 @@ void Simulation<D>::rebuild() {
   const double s = strain();
   auto& x = position_[0];
   auto& y = position_[1];
+  // Wall axes are never wrapped: a grain's centre stays a radius inside them (check_invariants).
   for (std::int32_t i = 0; i < n; ++i) {
-    frame_.wrap_into_box(x[at(i)], y[at(i)], velocity_[0][at(i)], s);
-    // Then into [0, L_x) in the sheared abscissa, where the cell grid lives.
-    x[at(i)] -= lx * std::floor(frame_.sheared_x(x[at(i)], y[at(i)], s) / lx);
-    if constexpr (D == 3) wrap_periodic(position_[2][at(i)], params_.length_z);
+    if (params_.walls[1]) {
+      if (!params_.walls[0]) wrap_periodic(x[at(i)], lx);
+    } else {
+      frame_.wrap_into_box(x[at(i)], y[at(i)], velocity_[0][at(i)], s);
+      // Then into [0, L_x) in the sheared abscissa, where the cell grid lives.
+      x[at(i)] -= lx * std::floor(frame_.sheared_x(x[at(i)], y[at(i)], s) / lx);
+    }
+    if constexpr (D == 3) {
+      if (!params_.walls[2]) wrap_periodic(position_[2][at(i)], params_.length_z);
+    }
   }
   lists_.reset(grid_.cell_count(), params_.particles);
   for (std::int32_t i = 0; i < n; ++i) {
@@ -174,6 +202,10 @@ void Simulation<D>::load(const ParticleState& state) {
   }
   diameter_ = state.diameter;
   mass_ = state.mass;
+  if (params_.roughness.rough) {
+    if (!state.rough()) throw std::invalid_argument("rough grains need angular velocities in the initial state");
+    for (int k = 0; k < kSpinComponents; ++k) spin_[static_cast<std::size_t>(k)] = state.spin(k);
+  }
   t_.assign(state.size(), t_now_);
 }
 
@@ -183,16 +215,25 @@ ParticleState Simulation<D>::state() const {
   out.dimension = D;
   out.diameter = diameter_;
   out.mass = mass_;
+  for (int k = 0; k < kSpinComponents && params_.roughness.rough; ++k) out.spin(k) = spin_[static_cast<std::size_t>(k)];
   out.resize(static_cast<std::size_t>(params_.particles));
   const double s = strain();
   for (std::size_t i = 0; i < out.size(); ++i) {
     const Vector r = position_now(static_cast<std::int32_t>(i));
+    const Vector v = velocity_now(static_cast<std::int32_t>(i));
     for (int a = 0; a < D; ++a) {
       out.position(a)[i] = r[a];
-      out.velocity(a)[i] = velocity_[a][i];
+      out.velocity(a)[i] = v[a];
     }
-    frame_.wrap_into_box(out.x[i], out.y[i], out.vx[i], s);
-    if constexpr (D == 3) wrap_periodic(out.z[i], params_.length_z);
+    // (x walls leave x inside the box: the frame's wrap does not move it.)
+    if (!params_.walls[1]) {
+      frame_.wrap_into_box(out.x[i], out.y[i], out.vx[i], s);
+    } else if (!params_.walls[0]) {
+      wrap_periodic(out.x[i], params_.length_x);
+    }
+    if constexpr (D == 3) {
+      if (!params_.walls[2]) wrap_periodic(out.z[i], params_.length_z);
+    }
   }
   return out;
 }
@@ -226,38 +267,78 @@ void Simulation<D>::start_production(const SystemParams& production) {
 }
 
 template <int D>
-typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const Vector& r) const {
+typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const Vector& r,
+                                                              const Vector& v) const {
   const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
-  const double vyi = velocity_[1][at(i)];
+  const double vyi = v[1];
 
   // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
-  // b = v_x.
+  // b = v_x (plus ½g_x under gravity, which Lees–Edwards allows only with g_y = 0).
   const double s = strain();
   const double y_rel = r[1] - 0.5 * params_.length_y;
   const double xi0 = r[0] - s * y_rel;
-  const double a = -shear_rate_ * vyi;
-  const double b = velocity_[0][at(i)] - shear_rate_ * y_rel - s * vyi;
+  double a = -shear_rate_ * vyi;
+  if (has_gravity_) a += 0.5 * gravity_[0];
+  const double b = v[0] - shear_rate_ * y_rel - s * vyi;
   const double left = cell[0] * grid_.width;
   const double right = left + grid_.width;
-  double best = first_exit_time(a, b, xi0 - right);
+  // A wall face of a boundary cell is never crossed: the wall is hit first (below).
+  const bool wall_x = params_.walls[0];
+  double best = wall_x && cell[0] == grid_.nx - 1 ? kInf : first_exit_time(a, b, xi0 - right);
   EventKind kind = crossing_through(0, 1);
-  if (const double t = first_exit_time(-a, -b, left - xi0); t < best) {
+  if (const double t = wall_x && cell[0] == 0 ? kInf : first_exit_time(-a, -b, left - xi0); t < best) {
     best = t;
     kind = crossing_through(0, 0);
   }
-  // The other axes are not sheared: straight flight between planes.
+  // The other axes are not sheared: straight (or parabolic) flight between planes.
   for (int axis = 1; axis < D; ++axis) {
-    const double v = velocity_[axis][at(i)];
+    const double va = v[axis];
     const double size = grid_.size(axis);
-    if (v > 0.0) {
-      if (const double t = std::max(0.0, ((cell[axis] + 1) * size - r[axis]) / v); t < best) {
+    const bool wall = params_.walls[static_cast<std::size_t>(axis)];
+    if (has_gravity_) {
+      const double half_g = 0.5 * gravity_[axis];
+      const double upper = (cell[axis] + 1) * size;
+      const double lower = cell[axis] * size;
+      if (!(wall && cell[axis] == grid_.count(axis) - 1)) {
+        if (const double t = first_exit_time(half_g, va, r[axis] - upper); t < best) {
+          best = t;
+          kind = crossing_through(axis, 1);
+        }
+      }
+      if (!(wall && cell[axis] == 0)) {
+        if (const double t = first_exit_time(-half_g, -va, lower - r[axis]); t < best) {
+          best = t;
+          kind = crossing_through(axis, 0);
+        }
+      }
+    } else if (va > 0.0) {
+      if (wall && cell[axis] == grid_.count(axis) - 1) continue;
+      if (const double t = std::max(0.0, ((cell[axis] + 1) * size - r[axis]) / va); t < best) {
         best = t;
         kind = crossing_through(axis, 1);
       }
-    } else if (v < 0.0) {
-      if (const double t = std::max(0.0, (cell[axis] * size - r[axis]) / v); t < best) {
+    } else if (va < 0.0) {
+      if (wall && cell[axis] == 0) continue;
+      if (const double t = std::max(0.0, (cell[axis] * size - r[axis]) / va); t < best) {
         best = t;
         kind = crossing_through(axis, 0);
+      }
+    }
+  }
+  // Walls: contact when the centre is one radius from the wall, g(τ) = ±(contact − r_a(τ)) ≥ 0.
+  if (params_.has_walls()) {
+    const double radius = radius_of(i);
+    for (int axis = 0; axis < D; ++axis) {
+      if (!params_.walls[static_cast<std::size_t>(axis)]) continue;
+      const double half_g = has_gravity_ ? 0.5 * gravity_[axis] : 0.0;
+      const double length = box_length(axis);
+      if (const double t = first_exit_time(-half_g, -v[axis], radius - r[axis]); t < best) {
+        best = t;
+        kind = wall_hit(2 * axis);
+      }
+      if (const double t = first_exit_time(half_g, v[axis], r[axis] - (length - radius)); t < best) {
+        best = t;
+        kind = wall_hit(2 * axis + 1);
       }
     }
   }
@@ -267,11 +348,18 @@ typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, co
 
 template <int D>
 typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) const {
-  const Vector ri = position_now(i);
-  const Vector vi = velocity(i);
-  const Crossing crossing = next_crossing(i, ri);
+  return has_gravity_ ? next_event_in<true>(i) : next_event_in<false>(i);
+}
 
-  // Collisions with the particles of the 3^D block of cells.
+template <int D>
+template <bool kGravity>
+typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i) const {
+  const Vector ri = position_now(i);
+  const Vector vi = velocity_now(i);
+  const Crossing crossing = next_crossing(i, ri, vi);
+
+  // Collisions with the particles of the 3^D block of cells.  Under a uniform gravity the relative
+  // motion of two grains is still a straight line: only their present states need it.
   std::int32_t partner = -1;
   double best = kInf;
   const bool polydisperse = !diameter_.empty();
@@ -281,8 +369,14 @@ typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) con
     Vector rel_position;
     Vector rel_velocity;
     for (int a = 0; a < D; ++a) {
-      rel_position[a] = position_[a][at(j)] + velocity_[a][at(j)] * dt_j + shift[a] - ri[a];
-      rel_velocity[a] = a == 0 ? velocity_[a][at(j)] + shift_vx - vi[a] : velocity_[a][at(j)] - vi[a];
+      double vj = velocity_[a][at(j)];
+      if constexpr (kGravity) {
+        rel_position[a] = position_[a][at(j)] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
+        vj += gravity_[a] * dt_j;
+      } else {
+        rel_position[a] = position_[a][at(j)] + vj * dt_j + shift[a] - ri[a];
+      }
+      rel_velocity[a] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
     }
     const double contact = polydisperse ? contact_distance(i, j) : sigma;
     if (const double t = collision_time(rel_position, rel_velocity, contact); t < best) {
@@ -343,8 +437,8 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
 
   Vector r;
   for (int a = 0; a < D; ++a) r[a] = position_[a][at(j)] + shift.position[a] - position_[a][at(i)];
-  const Vector v1 = velocity(i);
-  Vector v2 = velocity(j);
+  const Vector v1 = velocity_now(i);
+  Vector v2 = velocity_now(j);
   v2[0] += shift.velocity_x;
   // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
   // round-off; a pair that is no longer approaching must not collide.
@@ -360,9 +454,19 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     last_collision_[at(i)] = t_now_;
     last_collision_[at(j)] = t_now_;
   }
-  const double m1 = mass_.empty() ? 1.0 : mass_[at(i)];
-  const double m2 = mass_.empty() ? 1.0 : mass_[at(j)];
-  const PostCollisionVelocities<D> after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
+  const double m1 = mass_of(i);
+  const double m2 = mass_of(j);
+  PostCollisionVelocities<D> after;
+  RoughImpulse<D> rough{};
+  double rough_energy_change = 0.0;
+  if (params_.roughness.rough) {
+    const double before = kinetic_energy(i, v1) + kinetic_energy(j, v2);
+    after = {v1, v2};
+    rough = collide_rough(i, j, after.v1, after.v2, k_hat, e);
+    rough_energy_change = kinetic_energy(i, after.v1) + kinetic_energy(j, after.v2) - before;
+  } else {
+    after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
+  }
   for (int a = 0; a < D; ++a) {
     velocity_[a][at(i)] = after.v1[a];
     velocity_[a][at(j)] = a == 0 ? after.v2[a] - shift.velocity_x : after.v2[a];
@@ -386,10 +490,16 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     record.second_velocity_before = v2;
     record.second_velocity_before[0] = v2[0] - shift.velocity_x;
     record.first_velocity_after = after.v1;
-    record.second_velocity_after = velocity(j);
+    record.second_velocity_after = velocity_now(j);
     record.contact_normal = k_hat;
     record.relative_velocity = v1 - v2;
-    record.impulse = mass_.empty() ? normal_impulse(v1 - v2, k_hat, e) : normal_impulse(v1 - v2, k_hat, e, m1, m2);
+    if (params_.roughness.rough) {
+      record.impulse = dot(rough.normal, k_hat);
+      record.tangential_impulse = rough.tangential;
+      record.rough_energy_change = rough_energy_change;
+    } else {
+      record.impulse = mass_.empty() ? normal_impulse(v1 - v2, k_hat, e) : normal_impulse(v1 - v2, k_hat, e, m1, m2);
+    }
     record.restitution = e;
     record.contact_distance = contact_distance(i, j);
     record.first_mass = m1;
@@ -446,6 +556,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     const EventKind kind = kind_[at(i)];
     const std::int32_t j = partner_[at(i)];
     bool collided = false;
+    bool hit_wall = false;
     if (kind == EventKind::kCollision) {
       if (count_[at(j)] != partner_count_[at(i)]) {
         predict(i);  // the partner has collided since: stale
@@ -454,6 +565,9 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       }
     } else if (kind == EventKind::kNone) {
       return StopReason::kNoEvents;  // only reachable when every time is +inf
+    } else if (is_wall_hit(kind)) {
+      execute_wall_hit(i, wall_face(kind));
+      hit_wall = true;
     } else {
       execute_crossing(i, kind);
     }
@@ -463,13 +577,15 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
 #endif
       rebase();
     }
-    if (collided) {
+    // Wall hits count towards collapse too: a grain bouncing ever lower on a floor (without the
+    // TC model) hits it infinitely often in a finite time.
+    if (collided || hit_wall) {
       if (collapse_detector_.on_collision(t_now_)) {
         const Vector where = position_now(i);
-        collapse_ = {time(), i, j, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};
+        collapse_ = {time(), i, collided ? j : -1, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};
         return StopReason::kInelasticCollapse;
       }
-      if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
+      if (collided && collisions_ >= until_collisions) return StopReason::kCollisionsReached;
     }
   }
 }

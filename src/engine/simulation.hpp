@@ -4,7 +4,9 @@
 // times; stale events caught by collision counters; periodic re-basing of the clock; a sheared
 // cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp); and a time-
 // dependent image velocity U(t) in constant segments (boundary/shear_protocol.hpp), its changes
-// and the grid's re-alignments kept as global timed actions beside the heap.
+// and the grid's re-alignments kept as global timed actions beside the heap; and, per axis, flat
+// walls instead of images, parabolic flights under gravity and spinning rough grains
+// (ARCHITECTURE.md, "Spin, walls and gravity").
 #pragma once
 
 #include <algorithm>
@@ -26,6 +28,7 @@
 #include "events/event_heap.hpp"
 #include "events/timed_actions.hpp"
 #include "physics/collision_law.hpp"
+#include "physics/rough_collision_rule.hpp"
 
 namespace granule {
 
@@ -40,7 +43,7 @@ enum class StopReason {
 struct CollapseReport {
   double time = 0.0;
   std::int32_t first = -1;
-  std::int32_t second = -1;
+  std::int32_t second = -1;  // −1: the last collision was with a wall
   Vec3 position;  // z = 0 in 2D
 };
 
@@ -55,6 +58,7 @@ class Simulation {
 
  public:
   using Vector = Vec<D>;
+  static constexpr int kSpinComponents = D == 3 ? 3 : 1;
 
   // Start from lab positions and velocities free of overlaps; `clock` places the start on the
   // time line of an earlier run (a restart from a snapshot frame: same physics, new round-off).
@@ -150,7 +154,26 @@ class Simulation {
   // The cell coordinates (column, row, layer) of a cell id.
   std::array<int, D> cell_coordinates(std::int32_t cell) const;
   Vector position_now(std::int32_t i) const;
-  Vector velocity(std::int32_t i) const;
+  // Position and velocity of particle i `dt` after its local time (parabolic under gravity).
+  Vector position_after(std::int32_t i, double dt) const;
+  Vector velocity_now(std::int32_t i) const;
+  Spin<D> spin(std::int32_t i) const;
+  void set_spin(std::int32_t i, const Spin<D>& w);
+  double box_length(int axis) const {
+    return axis == 0 ? params_.length_x : (axis == 1 ? params_.length_y : params_.length_z);
+  }
+  double mass_of(std::int32_t i) const { return mass_.empty() ? 1.0 : mass_[static_cast<std::size_t>(i)]; }
+  double radius_of(std::int32_t i) const {
+    return 0.5 * (diameter_.empty() ? params_.diameter : diameter_[static_cast<std::size_t>(i)]);
+  }
+  // Particle i as one side of a rough contact (its spin, inverse mass, a²/I = 1/(q m)).
+  RoughBody<D> rough_body(std::int32_t i, const Vector& velocity) const;
+  // The rough-grain collision of i and j (their velocities v1, v2 — j's image-shifted — and the
+  // contact normal); returns the impulse on j and leaves the new velocities in v1, v2.
+  RoughImpulse<D> collide_rough(std::int32_t i, std::int32_t j, Vector& v1, Vector& v2, const Vector& k_hat, double e);
+  void execute_wall_hit(std::int32_t i, int face);
+  // ½ m v² + ½ I ω² of particle i moving at `velocity` (I = q m σ²/4 for rough grains).
+  double kinetic_energy(std::int32_t i, const Vector& velocity) const;
   CollisionLaw collision_law() const { return {params_.restitution, params_.tc_duration}; }
   // Contact distance σ_ij = (σ_i + σ_j)/2 (σ for a monodisperse run).
   double contact_distance(std::int32_t i, std::int32_t j) const {
@@ -173,9 +196,13 @@ class Simulation {
     double delay() const { return std::min(collision_delay, crossing.delay); }
   };
   // Flattened: the neighbour loop, its visitor and the pair test inline into one loop (the hot path).
-  [[gnu::flatten]] Prediction next_event(std::int32_t i) const;
-  // The first cell face particle i (now at `position`) reaches.
-  Crossing next_crossing(std::int32_t i, const Vector& position) const;
+  Prediction next_event(std::int32_t i) const;
+  // next_event's neighbour scan, compiled without and with gravity (the plain case pays nothing).
+  template <bool kGravity>
+  [[gnu::flatten]] Prediction next_event_in(std::int32_t i) const;
+  // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
+  // first wall it hits (the wall faces of boundary cells are never crossed).
+  Crossing next_crossing(std::int32_t i, const Vector& position, const Vector& velocity) const;
   // Where the box's image one period away across a face sits relative to the box, and how fast
   // its particles move relative to their originals (the per-axis boundary rule): ±L_x along x,
   // ±L_z along z, and along y the Lees–Edwards image, offset by ±Δ along x and moving at ±U.
@@ -186,7 +213,8 @@ class Simulation {
   FaceImage image_across(int axis, int direction, double strain) const;
   // Calls visit(j, shift, shift_vx) for every particle j ≠ i of the 3^D block of cells around
   // i's cell, with the image shift (position, and velocity along x) that brings j next to i.
-  // The sheared frame is plainly periodic, so images follow from the cell offsets alone.
+  // The sheared frame is plainly periodic, so images follow from the cell offsets alone; a wall
+  // axis has no images (the block stops at the wall).
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, Visit&& visit) const;
   // The image of a partner at lab offset `offset` from a particle in contact with it.
@@ -211,6 +239,11 @@ class Simulation {
   std::array<std::vector<double>, D> position_, velocity_;
   std::vector<double> t_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only
+  // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
+  // events); rough grains only.
+  std::array<std::vector<double>, kSpinComponents> spin_;
+  Vector gravity_;
+  bool has_gravity_ = false;
   std::vector<std::uint32_t> count_;  // collisions of each particle: invalidates stale events
   std::vector<std::int32_t> cell_;
   std::vector<double> last_collision_;  // TC model only
@@ -266,6 +299,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
     if constexpr (D == 3) {
       layer = cell[2] + dl;
       if (layer < 0 || layer >= grid_.nz) {
+        if (params_.walls[2]) continue;
         const int direction = layer < 0 ? -1 : 1;
         layer -= direction * grid_.nz;
         shift_z = image_across(2, direction, s).position[2];
@@ -274,6 +308,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
     for (int dr = -1; dr <= 1; ++dr) {
       int r = cell[1] + dr;
       int iy = 0;
+      if ((r < 0 || r >= grid_.ny) && params_.walls[1]) continue;
       if (r < 0) {
         r += grid_.ny;
         iy = -1;
@@ -289,6 +324,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
         shift[1] = row_shift.position.y;
         if constexpr (D == 3) shift[2] = shift_z;
         if (c < 0 || c >= grid_.nx) {
+          if (params_.walls[0]) continue;
           const int direction = c < 0 ? -1 : 1;
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];

@@ -1,6 +1,7 @@
 // Checkpoints of the engine: everything that decides its future — positions at local times,
 // pending events, cell-list and heap order (they break ties), clocks, TC history, the collapse
 // detector — so that a run restored from one continues bit for bit (tests/validation).
+#include <map>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -39,6 +40,60 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
   }
 }
 
+// The fixed parameters of spin, walls and gravity a run has, by checkpoint name (none for a plain
+// run, whose checkpoints keep the content they had before these existed).
+std::map<std::string, double> surface_parameters(const SystemParams& p, int dimension) {
+  std::map<std::string, double> out;
+  if (p.roughness.rough) {
+    out["inertia_factor"] = p.roughness.inertia_factor;
+    out["friction"] = p.roughness.friction;
+  }
+  for (int axis = 0; axis < dimension; ++axis) {
+    if (!p.walls[static_cast<std::size_t>(axis)]) continue;
+    out[std::string("walls_") + "xyz"[axis]] = 1.0;
+    for (int face = 2 * axis; face <= 2 * axis + 1; ++face) {
+      for (int a = 0; a < dimension; ++a) {
+        out["wall_" + std::to_string(face) + "_velocity_" + "xyz"[a]] = p.wall[static_cast<std::size_t>(face)].velocity[static_cast<std::size_t>(a)];
+      }
+    }
+  }
+  if (p.has_gravity()) {
+    for (int a = 0; a < dimension; ++a) out[std::string("gravity_") + "xyz"[a]] = p.gravity[static_cast<std::size_t>(a)];
+  }
+  return out;
+}
+
+// The restitutions a checkpoint restores (elastic during the pre-run), by name and reference.
+template <typename Params, typename Visit>
+void visit_restitutions(Params& p, int dimension, Visit&& visit) {
+  visit("restitution", p.restitution);
+  if (p.roughness.rough) visit("tangential_restitution", p.roughness.tangential_restitution);
+  for (int face = 0; face < 2 * dimension; ++face) {
+    if (!p.walls[static_cast<std::size_t>(face / 2)]) continue;
+    auto& wall = p.wall[static_cast<std::size_t>(face)];
+    visit("wall_" + std::to_string(face) + "_restitution", wall.restitution);
+    visit("wall_" + std::to_string(face) + "_tangential_restitution", wall.tangential_restitution);
+  }
+}
+
+void check_surfaces_match(const StateArchive& archive, const std::string& prefix, const SystemParams& p, int dimension) {
+  const std::map<std::string, double> expected = surface_parameters(p, dimension);
+  for (const auto& [name, value] : expected) {
+    if (!archive.contains(prefix + name) || archive.scalar(prefix + name) != value) {
+      throw std::runtime_error("checkpoint was written with another " + name + " than the configuration gives");
+    }
+  }
+  for (const char* feature : {"inertia_factor", "walls_x", "walls_y", "walls_z", "gravity_x"}) {
+    if (archive.contains(prefix + feature) && !expected.count(feature)) {
+      throw std::runtime_error(std::string("checkpoint was written with ") + feature + ", which the configuration does not have");
+    }
+  }
+}
+
+bool optional_array(std::string_view name) {
+  return name == "particle_diameter" || name == "particle_mass" || name.substr(0, 5) == "spin_";
+}
+
 template <typename T>
 std::vector<T> array_of_size(const StateArchive& archive, const std::string& name, std::size_t n) {
   std::vector<T> values = archive.get<T>(name);
@@ -61,6 +116,11 @@ void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
   }
   visit("particle_diameter", self.diameter_);
   visit("particle_mass", self.mass_);
+  if constexpr (D == 3) {
+    visit("spin_x", self.spin_[0]);
+    visit("spin_y", self.spin_[1]);
+  }
+  visit("spin_z", self.spin_[kSpinComponents - 1]);
   visit("local_time", self.t_);
   visit("collision_count", self.count_);
   visit("cell", self.cell_);
@@ -87,7 +147,8 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_scalar(prefix + "length_y", params_.length_y);
   archive.put_scalar(prefix + "shear_velocity", params_.shear_velocity);
   archive.put_scalar(prefix + "tc_duration", params_.tc_duration);
-  archive.put_scalar(prefix + "restitution", params_.restitution);
+  visit_restitutions(params_, D, [&](const std::string& name, double value) { archive.put_scalar(prefix + name, value); });
+  for (const auto& [name, value] : surface_parameters(params_, D)) archive.put_scalar(prefix + name, value);
   archive.put_scalar(prefix + "grid_nx", grid_.nx);
   archive.put_scalar(prefix + "grid_ny", grid_.ny);
   archive.put_scalar(prefix + "grid_width", grid_.width);
@@ -100,10 +161,10 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   }
 
   visit_saved_state(*this, [&](const char* name, const auto& value) {
-    // Per-particle diameters and masses exist only in polydisperse runs: a monodisperse
-    // checkpoint has no such entries (and keeps the content it had before they existed).
+    // Per-particle diameters and masses exist only in polydisperse runs, spins only for rough
+    // grains: other checkpoints have no such entries (and keep the content they had before).
     if constexpr (!std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
-      if (value.empty() && (std::string_view(name) == "particle_diameter" || std::string_view(name) == "particle_mass")) return;
+      if (value.empty() && optional_array(name)) return;
     }
     if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) {
       archive.put_scalar(prefix + name, value);
@@ -131,8 +192,11 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       frame_{params.length_x, params.length_y, 0.0},
       protocol_(params.shear_velocity, params.shear_history) {
   check_matches(archive, prefix, params, grid, D);
+  check_surfaces_match(archive, prefix, params, D);
+  for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];
+  has_gravity_ = params.has_gravity();
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
-  params_.restitution = archive.scalar(prefix + "restitution");
+  visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
   const auto n = static_cast<std::size_t>(params.particles);
   visit_saved_state(*this, [&](const char* name, auto& value) {
     using Value = std::decay_t<decltype(value)>;
@@ -147,6 +211,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       const std::string_view key(name);
       const bool per_particle_sizes = key == "particle_diameter" || key == "particle_mass";
       if (per_particle_sizes && !polydisperse) return;
+      if (key.substr(0, 5) == "spin_" && !params.roughness.rough) return;
       const bool absent = (key == "last_collision" && params.tc_duration <= 0.0) ||
                           (key == "collision_time" && protocol_.constant());
       value = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
@@ -159,7 +224,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
   kind_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (kinds[i] > last_event_kind(D)) throw std::runtime_error("checkpoint has an unknown event kind");
+    if (!valid_event_kind(kinds[i], D)) throw std::runtime_error("checkpoint has an unknown event kind");
     kind_[i] = static_cast<EventKind>(kinds[i]);
   }
   for (std::size_t i = 0; i < n; ++i) {

@@ -51,7 +51,13 @@ void Simulation<D>::check_invariants() const {
     const Vector r = position_now(i);
     bool finite = t_now_ >= t_[at(i)];
     for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(velocity_[a][at(i)]);
+    for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", i, " has a non-finite state or a local time after the clock");
+    for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
+      if (!params_.walls[static_cast<std::size_t>(a)]) continue;
+      const double inside = radius_of(i) - kDistanceTolerance * box_length(a);
+      if (r[a] < inside || r[a] > box_length(a) - inside) fail("particle ", i, " is in a wall along axis ", a, " at ", r[a]);
+    }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
     for (int a = 0; a < D; ++a) {
@@ -96,6 +102,15 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     return;
   }
   if (kind == EventKind::kNone) return;
+  if (is_wall_hit(kind)) {  // the grain must touch the wall
+    const int face = wall_face(kind);
+    const int axis = face / 2;
+    const double wall = face % 2 == 0 ? 0.0 : box_length(axis);
+    if (std::abs(std::abs(r[axis] - wall) - radius_of(i)) > kDistanceTolerance * box_length(axis)) {
+      fail("wall hit of particle ", i, " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
+    }
+    return;
+  }
   // A crossing: the particle must be on the face it is about to cross.
   const int axis = crossing_axis(kind);
   const double coordinate = axis == 0 ? frame_.sheared_x(r[0], r[1], strain()) : r[axis];

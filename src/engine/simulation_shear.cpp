@@ -61,7 +61,7 @@ void Simulation<D>::repredict_after_shear_change() {
       continue;
     }
     // The earliest collision inside the box is unchanged; the crossing in ξ is not.
-    const Crossing crossing = next_crossing(i, position_now(i));
+    const Crossing crossing = next_crossing(i, position_now(i), velocity_now(i));
     const double t_crossing = t_now_ + crossing.delay;
     const bool collision_first = collision_time_[at(i)] < t_crossing;
     kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;
@@ -80,21 +80,23 @@ void Simulation<D>::realign_sheared_grid() {
 template <int D>
 typename Simulation<D>::PartnerImage Simulation<D>::nearest_image(const Vector& offset) const {
   // The nearest image in the sheared frame, unambiguous because cells are at least as large as
-  // a contact pair (cell_grid.hpp).
+  // a contact pair (cell_grid.hpp); none across a wall axis.
   const double lx = params_.length_x;
   const double ly = params_.length_y;
   const double s = strain();
   const double dx = offset[0];
   const double dy = offset[1];
-  const int iy = dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0);
+  const int iy = params_.walls[1] ? 0 : (dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0));
   const ImageShift row = frame_.image_shift(0, iy, s);
   FaceImage shift{};
   shift.position[0] = row.position.x;
   shift.position[1] = row.position.y;
   shift.velocity_x = row.velocity_x;
   const double dxi = (dx + shift.position[0]) - s * (dy + shift.position[1]);
-  shift.position[0] -= lx * std::round(dxi / lx);
-  if constexpr (D == 3) shift.position[2] = -params_.length_z * std::round(offset[2] / params_.length_z);
+  if (!params_.walls[0]) shift.position[0] -= lx * std::round(dxi / lx);
+  if constexpr (D == 3) {
+    if (!params_.walls[2]) shift.position[2] = -params_.length_z * std::round(offset[2] / params_.length_z);
+  }
   return {iy, shift};
 }
 

@@ -33,7 +33,12 @@ fs::path scratch(const std::string& name) {
 
 SnapshotMetadata metadata(double tc_duration = 0.0) {
   SnapshotMetadata m;
-  m.system = SystemParams{kParticles, 0.01, 1.0, 2.0, 0.8, 0.0, tc_duration, {}};
+  m.system.particles = kParticles;
+  m.system.diameter = 0.01;
+  m.system.length_x = 1.0;
+  m.system.length_y = 2.0;
+  m.system.restitution = 0.8;
+  m.system.tc_duration = tc_duration;
   m.packing_fraction = 0.1;
   m.boundary = "periodic";
   m.seed = 7;

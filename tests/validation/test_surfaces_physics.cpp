@@ -1,0 +1,227 @@
+// Walls, gravity and spin against independent theory (issue 15), with stated tolerances:
+//  • an elastic gas in gravity above a floor: the floor carries the whole weight, P_floor = m g N_A
+//    (momentum balance, exact on average), and the column's profile is the hydrostatic one of
+//    the local-density theory (theory/hydrostatics.hpp: barometric in the dilute limit, Henderson
+//    / Carnahan–Starling corrections) away from the floor's layering;
+//  • the contact theorem: an elastic gas between flat walls pushes on them with its bulk pressure
+//    n T Z(φ) (Henderson in 2D, Carnahan–Starling in 3D), n measured in the middle of the box;
+//  • homogeneous cooling of rough grains: T_tr and T_rot against the Maxwellian kinetic theory of
+//    Huthmann & Zippelius (1997) and Luding et al. (1998) (theory/rough_cooling.hpp), in 2D and 3D,
+//    per collision (which removes the unknown contact value and collision frequency).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "theory/hard_spheres.hpp"
+#include "theory/hydrostatics.hpp"
+#include "theory/rough_cooling.hpp"
+#include "validation/surfaces_setup.hpp"
+
+namespace granule {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Momentum the walls took, per face, and the number of hits.
+template <int D>
+struct WallMomentum final : EventObserver<D> {
+  std::array<Vec<D>, 6> impulse{};
+  void on_collision(const CollisionRecord<D>&) override {}
+  void on_wall_collision(const WallCollisionRecord<D>& r) override {
+    auto& total = impulse[static_cast<std::size_t>(2 * r.axis + r.side)];
+    total = total + r.impulse_on_wall;
+  }
+};
+
+double temperature_of(const ParticleState& s) {
+  double sum = 0.0;
+  for (int a = 0; a < s.dimension; ++a) {
+    for (double v : s.velocity(a)) sum += v * v;
+  }
+  return sum / (s.dimension * static_cast<double>(s.size()));
+}
+
+template <int D>
+std::array<double, D> box_of(double lx, double ly) {
+  std::array<double, D> box{};
+  box.fill(lx);
+  box[1] = ly;
+  return box;
+}
+
+// The floor's load and the column's profile (2D: 1600 disks, 3D: 1000 spheres), T ≈ 1, g such
+// that the barometric height is a tenth of the box.
+template <int D>
+void check_column() {
+  std::array<int, D> per_axis;
+  per_axis.fill(D == 2 ? 40 : 10);
+  const double width = D == 2 ? 2.0 : 0.5;
+  const double height = D == 2 ? 3.0 : 2.0;
+  const double sigma = D == 2 ? 0.01 : 0.02;
+  SystemParams p = surfaces_system<D>(per_axis, box_of<D>(width, height), sigma, 1.0);
+  add_walls(p, 1, 1.0, -1.0);
+  const double g = 5.0;
+  p.gravity[1] = -g;
+  // The lattice squeezed into the lower 40 % of the box, so that the column that forms is about
+  // 7 barometric heights below the ceiling.
+  ParticleState initial = lattice_gas<D>(p, per_axis, 1.0, 3);
+  for (double& y : initial.y) y = 0.5 * sigma + 0.4 * (y - 0.5 * sigma);
+  Simulation<D> sim(p, surfaces_grid<D>(p), initial);
+  sim.run(kInf, 30 * p.particles);  // equilibrate: energy goes from height into temperature
+  WallMomentum<D> walls;
+  sim.add_observer(&walls);
+  const double t0 = sim.time();
+  double momentum_y0 = 0.0;
+  for (double v : sim.state().vy) momentum_y0 += v;
+  const double floor_area = std::pow(width, D - 1);
+  // Time averages over equally spaced samples: T and the heights of the centres.
+  const int samples = 400;
+  const double dt = 0.02;
+  double temperature = 0.0;
+  std::vector<double> heights;
+  for (int k = 1; k <= samples; ++k) {
+    sim.run(t0 + k * dt, std::numeric_limits<std::int64_t>::max());
+    const ParticleState s = sim.state();
+    temperature += temperature_of(s) / samples;
+    for (double y : s.y) heights.push_back(y - 0.5 * sigma);
+  }
+  const double span = sim.time() - t0;
+  // The walls carry the weight N m g (per unit area), the floor nearly all of it: exactly so up to
+  // the change of the gas's own momentum over the span (a breathing column), which is measured.
+  const double floor_pressure = -walls.impulse[2][1] / span / floor_area;
+  const double ceiling_pressure = walls.impulse[3][1] / span / floor_area;
+  const double weight = static_cast<double>(p.particles) * g / floor_area;
+  double momentum_y1 = 0.0;
+  for (double v : sim.state().vy) momentum_y1 += v;
+  const double breathing = (momentum_y1 - momentum_y0) / span / floor_area;
+  std::printf("[%dD] floor pressure / weight = %.4f, ceiling / weight = %.2e, d(P_y)/dt / weight = %.2e, T = %.4f, "
+              "%lld collisions\n", D, floor_pressure / weight, ceiling_pressure / weight, breathing / weight, temperature,
+              static_cast<long long>(sim.collisions()));
+  EXPECT_NEAR(floor_pressure - ceiling_pressure, weight + breathing, 1e-9 * weight);  // momentum balance, exact
+  EXPECT_NEAR(floor_pressure / weight, 1.0, 0.02);  // on average the floor holds the column
+  EXPECT_LT(ceiling_pressure / weight, 0.005);
+  // The column: fractions of grains above heights of 1, 2, 3 barometric heights, against the
+  // hydrostatic profile at the measured T (integrated numerically on a fine grid).
+  const theory::HydrostaticColumn column{D, sigma, 1.0, g, temperature, static_cast<double>(p.particles) / floor_area};
+  const double h = theory::barometric_height(column);
+  std::vector<double> grid;
+  const double top = height - sigma;
+  for (double y = 0.0; y <= top; y += h / 400.0) grid.push_back(y);
+  const std::vector<double> phi = theory::hydrostatic_packing_fraction(column, grid);
+  auto theory_fraction_above = [&](double y0) {
+    double above = 0.0, total = 0.0;
+    for (std::size_t k = 1; k < grid.size(); ++k) {
+      const double slice = 0.5 * (phi[k] + phi[k - 1]) * (grid[k] - grid[k - 1]);
+      total += slice;
+      if (grid[k - 1] >= y0) above += slice;
+    }
+    return above / total;
+  };
+  for (double multiple : {1.0, 2.0, 3.0}) {
+    const double y0 = multiple * h;
+    double above = 0.0;
+    for (double y : heights) above += y >= y0 ? 1.0 : 0.0;
+    above /= static_cast<double>(heights.size());
+    const double expected = theory_fraction_above(y0);
+    std::printf("[%dD] fraction above %.0f h: measured %.4f, hydrostatic theory %.4f, barometric %.4f\n", D, multiple,
+                above, expected, std::exp(-multiple));
+    EXPECT_NEAR(above / expected, 1.0, 0.05 * multiple);
+  }
+}
+
+TEST(SurfacesPhysics, DisksInGravityLoadTheFloorWithTheirWeightAndFormTheHydrostaticColumn) { check_column<2>(); }
+TEST(SurfacesPhysics, SpheresInGravityLoadTheFloorWithTheirWeightAndFormTheHydrostaticColumn) { check_column<3>(); }
+
+// Contact theorem: the walls feel the bulk pressure.
+template <int D>
+void check_wall_pressure() {
+  std::array<int, D> per_axis;
+  per_axis.fill(D == 2 ? 40 : 10);
+  const double sigma = D == 2 ? 0.0127 : 0.07;  // ν ≈ 0.20 (disks), φ ≈ 0.18 (spheres)
+  SystemParams p = surfaces_system<D>(per_axis, box_of<D>(1.0, 1.0), sigma, 1.0);
+  add_walls(p, 1, 1.0, -1.0);
+  Simulation<D> sim(p, surfaces_grid<D>(p), lattice_gas<D>(p, per_axis, 1.0, 17));
+  sim.run(kInf, 20 * p.particles);
+  WallMomentum<D> walls;
+  sim.add_observer(&walls);
+  const double t0 = sim.time();
+  const int samples = 800;
+  double temperature = 0.0, middle_density = 0.0;
+  const double slab = 0.5;  // the middle half of the box in y
+  for (int k = 1; k <= samples; ++k) {
+    sim.run(t0 + k * 0.01, std::numeric_limits<std::int64_t>::max());
+    const ParticleState s = sim.state();
+    temperature += temperature_of(s) / samples;
+    double inside = 0.0;
+    for (double y : s.y) inside += std::abs(y - 0.5) < 0.5 * slab ? 1.0 : 0.0;
+    middle_density += inside / slab / samples;  // per unit volume: the box is 1 wide (deep)
+  }
+  const double span = sim.time() - t0;
+  const double wall_pressure = 0.5 * (-walls.impulse[2][1] + walls.impulse[3][1]) / span;
+  const double v_d = D == 2 ? M_PI * sigma * sigma / 4.0 : M_PI * sigma * sigma * sigma / 6.0;
+  const double phi = middle_density * v_d;
+  const double bulk = theory::hard_sphere_pressure(D, middle_density, temperature, phi);
+  std::printf("[%dD] wall pressure %.5g, bulk n T Z(φ = %.3f) %.5g: ratio %.4f\n", D, wall_pressure, phi, bulk,
+              wall_pressure / bulk);
+  EXPECT_NEAR(wall_pressure / bulk, 1.0, 0.02);
+}
+
+TEST(SurfacesPhysics, DisksPushOnAFlatWallWithTheirBulkPressure) { check_wall_pressure<2>(); }
+TEST(SurfacesPhysics, SpheresPushOnAFlatWallWithTheirBulkPressure) { check_wall_pressure<3>(); }
+
+// Rough homogeneous cooling, per collision: T_tr(c) and T_rot(c) from equipartition at c = 0.
+template <int D>
+void check_rough_cooling(double e, double beta) {
+  std::array<int, D> per_axis;
+  per_axis.fill(D == 2 ? 50 : 14);
+  const double sigma = D == 2 ? 0.004 : 0.0216;  // ν ≈ 0.03 (2D), φ ≈ 0.03 (3D)
+  SystemParams p = surfaces_system<D>(per_axis, box_of<D>(1.0, 1.0), sigma, 1.0);
+  const double q = D == 2 ? 0.5 : 0.4;
+  make_rough(p, -1.0, q);
+  Simulation<D> sim(p, surfaces_grid<D>(p), lattice_gas<D>(p, per_axis, 1.0, 23));
+  sim.run(kInf, 5 * p.particles);  // smooth elastic: melt the lattice, spins untouched
+  SystemParams production = p;
+  production.restitution = e;
+  production.roughness.tangential_restitution = beta;
+  sim.start_production(production);
+  const double inertia = q * 0.25 * sigma * sigma;
+  auto temperatures = [&]() {
+    const ParticleState s = sim.state();
+    double rot = 0.0;
+    for (int k = 0; k < s.spin_components(); ++k) {
+      for (double w : s.spin(k)) rot += inertia * w * w;
+    }
+    return theory::RoughTemperatures{temperature_of(s), rot / (s.spin_components() * static_cast<double>(s.size()))};
+  };
+  const theory::RoughTemperatures start = temperatures();
+  const theory::RoughGrains grains{e, beta, q};
+  // Early on, before the velocity correlations of the clustering instability grow (thesis
+  // Chapter 2: these boxes are many L0 wide) and take the gas away from molecular chaos.
+  for (double c : {1.0, 2.0, 4.0}) {
+    sim.run(kInf, std::llround(c * static_cast<double>(p.particles)));
+    const theory::RoughTemperatures measured = temperatures();
+    const theory::RoughTemperatures expected = theory::rough_temperatures_after_collisions(D, grains, start, c);
+    std::printf("[%dD e=%.2f β=%+.2f] c=%4.1f  T_tr %.4f (theory %.4f)  T_rot %.4f (theory %.4f)\n", D, e, beta, c,
+                measured.translational, expected.translational, measured.rotational, expected.rotational);
+    // 3 % at first, 6 % by c = 4: the Maxwellian theory neglects the non-Gaussian parts of the
+    // velocity and spin distributions and their correlations, known to grow to several per cent
+    // in the cooling state of rough grains (Brilliantov, Pöschel et al., PRL 98, 128001 (2007)).
+    const double tolerance = c <= 2.0 ? 0.03 : 0.06;
+    EXPECT_NEAR(measured.translational / expected.translational, 1.0, tolerance) << "c = " << c;
+    EXPECT_NEAR(measured.rotational / expected.rotational, 1.0, tolerance) << "c = " << c;
+  }
+}
+
+TEST(SurfacesPhysics, RoughDisksCoolAsKineticTheorySays) {
+  check_rough_cooling<2>(0.9, -0.4);
+  check_rough_cooling<2>(0.95, 0.5);
+}
+TEST(SurfacesPhysics, RoughSpheresCoolAsKineticTheorySays) {
+  check_rough_cooling<3>(0.9, -0.4);
+  check_rough_cooling<3>(0.8, 0.5);
+}
+
+}  // namespace
+}  // namespace granule
