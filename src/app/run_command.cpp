@@ -215,9 +215,9 @@ void print_grains_walls_gravity(const RunConfig& config) {
   const int d = s.dimension;
   const RoughnessParams& r = s.roughness;
   if (r.rough) {
-    fmt::print("rough grains: β = {}, q = {} (I = q m σ²/4), μ = {}; initial T_rot = {}\n", r.tangential_restitution,
-               r.inertia_factor, std::isfinite(r.friction) ? fmt::format("{}", r.friction) : "∞ (no Coulomb limit)",
-               config.initial_rotational_temperature);
+    fmt::print("rough grains: β = {}, q = {} (I = q m σ²/4), μ = {}{}\n", r.tangential_restitution, r.inertia_factor,
+               std::isfinite(r.friction) ? fmt::format("{}", r.friction) : "∞ (no Coulomb limit)",
+               config.initial_from ? std::string{} : fmt::format("; initial T_rot = {}", config.initial_rotational_temperature));
   }
   const auto vector_text = [d](const std::array<double, 3>& v) {
     return d == 3 ? fmt::format("({}, {}, {})", v[0], v[1], v[2]) : fmt::format("({}, {})", v[0], v[1]);

@@ -20,8 +20,8 @@ const char* stop_text(StopReason reason) {
 
 namespace {
 
-// Issue 15's parameters: rough grains (β, q, μ; null when smooth), the walls (one entry per wall,
-// empty without) and g.
+// Issue 15's parameters: rough grains (β, q, μ, the initial T_rot of a new gas; null when
+// smooth), the walls (one entry per wall, empty without) and g.
 template <int D>
 void describe_grains_walls_gravity(const RunConfig& config, nlohmann::json& j) {
   const SystemParams& s = config.system;
@@ -31,7 +31,8 @@ void describe_grains_walls_gravity(const RunConfig& config, nlohmann::json& j) {
     j["roughness"] = {{"tangential_restitution", r.tangential_restitution},
                       {"inertia_factor", r.inertia_factor},
                       {"friction", std::isfinite(r.friction) ? nlohmann::json(r.friction) : nlohmann::json(nullptr)},
-                      {"initial_rotational_temperature", config.initial_rotational_temperature}};
+                      {"initial_rotational_temperature", config.initial_from ? nlohmann::json(nullptr)
+                                                                             : nlohmann::json(config.initial_rotational_temperature)}};
   }
   const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
   nlohmann::json walls = nlohmann::json::array();
