@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -207,13 +209,42 @@ std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const
   return session;
 }
 
+// Rough grains, walls and gravity (issue 15), one line each when present.
+void print_grains_walls_gravity(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  const int d = s.dimension;
+  const RoughnessParams& r = s.roughness;
+  if (r.rough) {
+    fmt::print("rough grains: β = {}, q = {} (I = q m σ²/4), μ = {}{}\n", r.tangential_restitution, r.inertia_factor,
+               std::isfinite(r.friction) ? fmt::format("{}", r.friction) : "∞ (no Coulomb limit)",
+               config.initial_from ? std::string{} : fmt::format("; initial T_rot = {}", config.initial_rotational_temperature));
+  }
+  const auto vector_text = [d](const std::array<double, 3>& v) {
+    return d == 3 ? fmt::format("({}, {}, {})", v[0], v[1], v[2]) : fmt::format("({}, {})", v[0], v[1]);
+  };
+  const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (!s.walls[axis]) continue;
+    const WallParams& lower = s.wall[2 * axis];
+    const WallParams& upper = s.wall[2 * axis + 1];
+    const char name = "xyz"[axis];
+    fmt::print("walls at {} = 0 (e_w = {}, β_w = {}, velocity {}) and {} = {} (e_w = {}, β_w = {}, velocity {})\n", name,
+               lower.restitution, lower.tangential_restitution, vector_text(lower.velocity), name, lengths[axis],
+               upper.restitution, upper.tangential_restitution, vector_text(upper.velocity));
+  }
+  if (s.has_gravity()) fmt::print("gravity g = {}\n", vector_text(s.gravity));
+}
+
 void print_header(const RunConfig& config) {
   const SystemParams& s = config.system;
-  fmt::print("granule {}: {}, N = {}, ν = {:.4g}, σ = {:.6g}{}, e = {}, {} box {} × {}{}{}\n", kVersion,
-             s.dimension == 3 ? "spheres" : "disks", s.particles, config.packing_fraction, s.diameter,
-             config.diameters.monodisperse() ? "" : " (largest)", s.restitution, config.lees_edwards ? "Lees–Edwards" : "periodic",
-             s.length_x, s.length_y, s.dimension == 3 ? fmt::format(" × {}", s.length_z) : std::string{},
-             config.lees_edwards ? fmt::format(", U = {}", s.shear_velocity) : std::string{});
+  const char* boundary = config.lees_edwards ? "Lees–Edwards" : s.has_walls() ? "walled" : "periodic";
+  const double u = config.lees_edwards ? s.shear_velocity : wall_shear_velocity(s);
+  fmt::print("granule {}: {}{}, N = {}, ν = {:.4g}, σ = {:.6g}{}, e = {}, {} box {} × {}{}{}\n", kVersion,
+             s.roughness.rough ? "rough " : "", s.dimension == 3 ? "spheres" : "disks", s.particles, config.packing_fraction,
+             s.diameter, config.diameters.monodisperse() ? "" : " (largest)", s.restitution, boundary, s.length_x, s.length_y,
+             s.dimension == 3 ? fmt::format(" × {}", s.length_z) : std::string{},
+             config.lees_edwards || s.walls[1] ? fmt::format(", U = {}", u) : std::string{});
+  print_grains_walls_gravity(config);
   if (config.equilibrate > 0.0) fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
 }
 

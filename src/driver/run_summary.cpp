@@ -1,5 +1,7 @@
 #include "driver/run_summary.hpp"
 
+#include <cmath>
+
 #include "granule/version.hpp"
 #include "theory/steady_shear.hpp"
 
@@ -15,6 +17,42 @@ const char* stop_text(StopReason reason) {
   }
   return "unknown";
 }
+
+namespace {
+
+// Issue 15's parameters: rough grains (β, q, μ, the initial T_rot of a new gas; null when
+// smooth), the walls (one entry per wall, empty without) and g.
+template <int D>
+void describe_grains_walls_gravity(const RunConfig& config, nlohmann::json& j) {
+  const SystemParams& s = config.system;
+  const RoughnessParams& r = s.roughness;
+  j["roughness"] = nullptr;
+  if (r.rough) {
+    j["roughness"] = {{"tangential_restitution", r.tangential_restitution},
+                      {"inertia_factor", r.inertia_factor},
+                      {"friction", std::isfinite(r.friction) ? nlohmann::json(r.friction) : nlohmann::json(nullptr)},
+                      {"initial_rotational_temperature", config.initial_from ? nlohmann::json(nullptr)
+                                                                             : nlohmann::json(config.initial_rotational_temperature)}};
+  }
+  const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
+  nlohmann::json walls = nlohmann::json::array();
+  for (std::size_t axis = 0; axis < static_cast<std::size_t>(D); ++axis) {
+    if (!s.walls[axis]) continue;
+    for (std::size_t side = 0; side < 2; ++side) {
+      const WallParams& w = s.wall[2 * axis + side];
+      walls.push_back({{"axis", std::string(1, "xyz"[axis])},
+                       {"position", side == 0 ? 0.0 : lengths[axis]},
+                       {"restitution", w.restitution},
+                       {"tangential_restitution", w.tangential_restitution},
+                       {"velocity", std::vector<double>(w.velocity.begin(), w.velocity.begin() + D)}});
+    }
+  }
+  j["walls"] = walls;
+  if (s.walls[1]) j["wall_shear_velocity"] = wall_shear_velocity(s);
+  j["gravity"] = std::vector<double>(s.gravity.begin(), s.gravity.begin() + D);
+}
+
+}  // namespace
 
 template <int D>
 nlohmann::json summary_json(const RunConfig& config, const Simulation<D>& sim, const CellGrid& grid, StopReason reason,
@@ -35,8 +73,9 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation<D>& sim, c
   j["polydisperse"] = !config.diameters.monodisperse();
   j["restitution"] = s.restitution;
   j["tc_duration"] = s.tc_duration;
-  j["boundary"] = config.lees_edwards ? "lees-edwards" : "periodic";
+  j["boundary"] = boundary_kind_name(config);
   j["shear_velocity"] = s.shear_velocity;
+  describe_grains_walls_gravity<D>(config, j);
   j["seed"] = config.seed;
   j["collisions"] = sim.collisions();
   j["events"] = sim.events();

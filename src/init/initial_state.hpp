@@ -4,6 +4,10 @@
 // ½⟨v'²⟩ for unit-mass disks, eq 1.3), zero total momentum Σ m_i v_i, and for Lees–Edwards the
 // linear shear profile u(y) = γ (y − L_y/2) along x added, γ = U/L_y with U the
 // `profile_velocity` (default: params.shear_velocity; 0 gives the static gas of thesis §4.3).
+// With walls (issue 15) every centre starts at least its own radius from each wall, and between
+// moving y walls the profile runs linearly from one wall's velocity to the other's; rough grains
+// get Gaussian angular velocities, drawn after everything else so that smooth runs keep their
+// initial states bit for bit.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +38,16 @@ inline constexpr double kClosePacking = 0.9068996821171089;
 inline constexpr double kClosePacking3d = 0.7404804896930609;
 inline double close_packing(int dimension) { return dimension == 3 ? kClosePacking3d : kClosePacking; }
 
+// What walls and rough grains add to an initial state.
+struct WallFlowAndSpins {
+  // Between y walls: v_x(y) linear from the lower wall's velocity to the upper one's (a wall-driven
+  // Couette flow); false: a static gas.  profile_velocity (Lees–Edwards images) is 0 then.
+  bool wall_profile = true;
+  // Rough grains: T_rot = Σ I_i |ω_i|² / (d_rot N), I_i = q m_i σ_i²/4, d_rot = 1 (disks) or 3
+  // (spheres); default the translational T (equipartition); 0: no spin.
+  std::optional<double> rotational_temperature;
+};
+
 struct InitialStateResult {
   ParticleState state;
   std::string error;  // empty on success
@@ -43,6 +57,6 @@ struct InitialStateResult {
 // params.diameter) and masses of a polydisperse system; empty for a monodisperse one.
 InitialStateResult make_initial_state(const SystemParams& params, double temperature, std::uint64_t seed,
                                       Placement placement, std::optional<double> profile_velocity = std::nullopt,
-                                      const ParticleSizes& sizes = {});
+                                      const ParticleSizes& sizes = {}, const WallFlowAndSpins& walls_and_spins = {});
 
 }  // namespace granule

@@ -49,6 +49,15 @@ Lattice densest_fcc_lattice(const SystemParams& p) {
   return best;
 }
 
+// The region the centres may occupy: the box, each side along a wall axis shortened by the
+// (largest) diameter, so that a centre stays a radius from each wall.
+SystemParams centre_region(SystemParams p) {
+  if (p.walls[0]) p.length_x -= p.diameter;
+  if (p.walls[1]) p.length_y -= p.diameter;
+  if (p.walls[2]) p.length_z -= p.diameter;
+  return p;
+}
+
 }  // namespace
 
 Lattice densest_lattice(const SystemParams& p) {
@@ -56,11 +65,16 @@ Lattice densest_lattice(const SystemParams& p) {
 }
 
 bool place_on_lattice(const SystemParams& p, Random& rng, ParticleState& out) {
-  const Lattice lattice = densest_lattice(p);
+  // Between walls the lattice fills the centres' region, a radius in from each wall (its
+  // periodicity across the walls is then unused).
+  const SystemParams region = centre_region(p);
+  const Lattice lattice = densest_lattice(region);
   if (lattice.spacing < p.diameter * (1.0 + 1e-9)) return false;
   const auto& cells = lattice.cells;
-  std::array<double, 3> edge{p.length_x / static_cast<double>(cells[0]), p.length_y / static_cast<double>(cells[1]),
-                             p.length_z / static_cast<double>(cells[2])};
+  std::array<double, 3> edge{region.length_x / static_cast<double>(cells[0]), region.length_y / static_cast<double>(cells[1]),
+                             region.length_z / static_cast<double>(cells[2])};
+  std::array<double, 3> offset{};
+  for (std::size_t a = 0; a < 3; ++a) offset[a] = p.walls[a] ? 0.5 * p.diameter : 0.0;
   std::vector<std::int64_t> sites(static_cast<std::size_t>(lattice.sites()));
   std::iota(sites.begin(), sites.end(), 0);
   // The FCC basis in units of the cell edges.
@@ -71,14 +85,14 @@ bool place_on_lattice(const SystemParams& p, Random& rng, ParticleState& out) {
     if (p.dimension == 2) {
       const std::int64_t row = sites[k] / cells[0];
       const std::int64_t column = sites[k] % cells[0];
-      out.x[k] = (static_cast<double>(column) + 0.25 + 0.5 * static_cast<double>(row % 2)) * edge[0];
-      out.y[k] = (static_cast<double>(row) + 0.5) * edge[1];
+      out.x[k] = (static_cast<double>(column) + 0.25 + 0.5 * static_cast<double>(row % 2)) * edge[0] + offset[0];
+      out.y[k] = (static_cast<double>(row) + 0.5) * edge[1] + offset[1];
     } else {  // site = 4 (i_x + n_x (i_y + n_y i_z)) + basis; a quarter cell off the box faces
       const std::int64_t cell = sites[k] / 4;
       const double* basis = kBasis[sites[k] % 4];
       const std::array<std::int64_t, 3> index{cell % cells[0], (cell / cells[0]) % cells[1], cell / (cells[0] * cells[1])};
       for (int a = 0; a < 3; ++a) {
-        out.position(a)[k] = (static_cast<double>(index[a]) + 0.25 + basis[a]) * edge[a];
+        out.position(a)[k] = (static_cast<double>(index[a]) + 0.25 + basis[a]) * edge[a] + offset[static_cast<std::size_t>(a)];
       }
     }
   }

@@ -11,12 +11,22 @@ double box_length(const SystemParams& p, int axis) {
   return axis == 0 ? p.length_x : (axis == 1 ? p.length_y : p.length_z);
 }
 
+// A uniform coordinate along `axis` from u ∈ [0, 1): anywhere in a periodic direction; between
+// walls, at least the radius σ/2 from each (u scaled onto [σ/2, L − σ/2], capped against round-off).
+double coordinate_in_box(const SystemParams& p, int axis, double sigma, double u) {
+  const double length = box_length(p, axis);
+  if (!p.walls[static_cast<std::size_t>(axis)]) return u * length;
+  const double radius = 0.5 * sigma;
+  return std::min(radius + u * (length - sigma), length - radius);
+}
+
 // The cells within one cell of `cell` in a periodic row of `cells`, each once.
 int neighbour_count(int cells) { return std::min(cells, 3); }
 int neighbour(int cell, int k, int cells) { return cells >= 3 ? (cell + k - 1 + cells) % cells : k; }
 
 // Whether a particle of diameter `sigma` at `r` would overlap one already placed: contact at
-// σ_ij = (σ_i + σ_j)/2, nearest periodic image, with a relative margin of 10⁻⁹ on σ_ij².
+// σ_ij = (σ_i + σ_j)/2, nearest periodic image (none across walls), with a relative margin of
+// 10⁻⁹ on σ_ij².
 bool overlaps_placed(const SystemParams& p, const PlacementGrid& grid, const ParticleState& placed,
                      const std::array<double, 3>& r, double sigma, const std::array<int, 3>& cell) {
   const int d = p.dimension;
@@ -32,7 +42,7 @@ bool overlaps_placed(const SystemParams& p, const PlacementGrid& grid, const Par
           double distance_sq = 0.0;
           for (int a = 0; a < d; ++a) {
             double delta = placed.position(a)[jj] - r[a];
-            delta -= box_length(p, a) * std::round(delta / box_length(p, a));  // nearest periodic image
+            if (!p.walls[static_cast<std::size_t>(a)]) delta -= box_length(p, a) * std::round(delta / box_length(p, a));
             distance_sq += delta * delta;
           }
           if (distance_sq < contact_diameter * contact_diameter * (1.0 + 1e-9)) return true;
@@ -75,9 +85,10 @@ bool place_randomly(const SystemParams& p, Random& rng, ParticleState& out) {
     if (++attempts > max_attempts) return false;
     std::array<double, 3> r{};
     std::array<int, 3> cell{};
-    for (int a = 0; a < d; ++a) r[a] = rng.uniform() * box_length(p, a);
+    const double sigma = out.diameter_of(placed, p.diameter);
+    for (int a = 0; a < d; ++a) r[a] = coordinate_in_box(p, a, sigma, rng.uniform());
     for (int a = 0; a < d; ++a) cell[a] = std::min(grid.count[a] - 1, static_cast<int>(r[a] / grid.width[a]));
-    if (overlaps_placed(p, grid, out, r, out.diameter_of(placed, p.diameter), cell)) continue;
+    if (overlaps_placed(p, grid, out, r, sigma, cell)) continue;
     for (int a = 0; a < d; ++a) out.position(a)[placed] = r[a];
     const std::size_t c = grid.cell_of(cell);
     grid.next[placed] = grid.head[c];

@@ -1,6 +1,8 @@
 // Non-overlapping initial positions of N disks (d = 2) or spheres (d = 3) in a periodic box
 // (thesis §1.4.2: uniformly distributed): random sequential addition, or a lattice with random
-// vacancies for dense systems (triangular in 2D, face-centred cubic in 3D).  Per-particle
+// vacancies for dense systems (triangular in 2D, face-centred cubic in 3D).  Along a wall axis
+// (params.walls) every centre stays at least its own radius from each wall, and no periodic image
+// is seen across the walls.  Per-particle
 // diameters (polydisperse systems) come in out.diameter; otherwise every σ = params.diameter,
 // which is always the largest diameter.  Scratch memory is O(N) at any packing fraction.
 #pragma once
@@ -53,7 +55,8 @@ struct Lattice {
 Lattice densest_lattice(const SystemParams& params);
 
 // N of the sites of densest_lattice, chosen at random.  False if its spacing is below the
-// (largest) diameter.
+// (largest) diameter.  With walls the lattice is the densest one of the centres' region (each
+// side along a wall axis shortened by the largest diameter), a radius in from the walls.
 bool place_on_lattice(const SystemParams& params, Random& rng, ParticleState& out);
 
 }  // namespace granule

@@ -12,7 +12,9 @@
 #include "cells/cell_grid.hpp"
 #include "io/config_geometry.hpp"
 #include "io/config_reader.hpp"
+#include "io/config_roughness.hpp"
 #include "io/config_shear.hpp"
+#include "io/config_walls.hpp"
 #include "io/input_ranges.hpp"
 
 namespace granule {
@@ -24,10 +26,13 @@ const ConfigSchema& schema() {
       {"", {"seed"}},
       {"system",
        {"dimension", "particles", "area_fraction", "packing_fraction", "diameter", "diameters", "masses", "box",
-        "restitution", "tc_duration"}},
-      {"boundary", {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance"}},
+        "restitution", "tc_duration", "gravity", "tangential_restitution", "inertia_factor", "friction"}},
+      {"boundary",
+       {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance", "wall_axes",
+        "wall_restitution", "wall_tangential_restitution"}},
       {"initial",
-       {"temperature", "temperature_over_steady", "shear_profile", "from", "frame", "equilibrate", "placement"}},
+       {"temperature", "temperature_over_steady", "shear_profile", "from", "frame", "equilibrate", "placement",
+        "rotational_temperature"}},
       {"run", {"until_collisions_per_particle", "until_time"}},
       {"output",
        {"every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",
@@ -96,13 +101,16 @@ RunConfig resolve(const toml::table& root) {
   s.tc_duration = in.number("system.tc_duration", kNonNegative, " (0 switches the TC model off)").value_or(0.0);
   resolve_speeds(in, c);
   if (const auto from = in.path_text("initial.from")) {
-    for (const char* key : {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile", "initial.placement"}) {
+    for (const char* key : {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile", "initial.placement",
+                            "initial.rotational_temperature"}) {
       if (in.has(key)) throw ConfigError{fmt::format("{} cannot be combined with initial.from: the state comes from {}", key, *from)};
     }
     c.initial_from = InitialSource{*from, in.integer("initial.frame", 0, INT32_MAX)};
   } else if (in.has("initial.frame")) {
     throw ConfigError{"initial.frame needs initial.from = \"DIR\" (the run whose snapshot frame to start from)"};
   }
+  resolve_roughness(in, c);
+  resolve_gravity(in, c);
   c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
 
   c.until_collisions_per_particle = collision_count_setting(in, "run.until_collisions_per_particle", n);
@@ -194,7 +202,7 @@ const std::map<std::string, std::vector<std::string>>& replaced_keys() {
       {"initial.temperature", {"initial.temperature_over_steady", "initial.from", "initial.frame"}},
       {"initial.temperature_over_steady", {"initial.temperature", "initial.from", "initial.frame"}},
       {"initial.from", {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile",
-                        "initial.placement", "initial.equilibrate"}},
+                        "initial.placement", "initial.equilibrate", "initial.rotational_temperature"}},
       {"output.every_collisions_per_particle", {"output.every_time"}},
       {"output.every_time", {"output.every_collisions_per_particle"}},
       {"output.snapshot_every_collisions_per_particle", {"output.snapshot_every_time"}},
@@ -251,8 +259,9 @@ std::string to_toml(const RunConfig& c) {
   std::string out = "# Fully resolved configuration written by granule run: repeat the run with\n"
                     "#   granule run config.toml\n";
   out += fmt::format("seed = {}\n\n[system]\n", c.seed) + geometry_to_toml(c);
-  out += fmt::format("restitution = {:.17g}\ntc_duration = {:.17g}\n\n", s.restitution, s.tc_duration);
-  out += speeds_to_toml(c);
+  out += fmt::format("restitution = {:.17g}\ntc_duration = {:.17g}\n", s.restitution, s.tc_duration);
+  out += roughness_to_toml(c) + gravity_to_toml(c) + "\n";
+  out += speeds_to_toml(c) + rotational_temperature_to_toml(c);
   const char* placement = c.placement == Placement::kRandom ? "random" : c.placement == Placement::kLattice ? "lattice" : "auto";
   out += fmt::format("equilibrate = {:.17g}\n", c.equilibrate);
   if (!c.initial_from) out += fmt::format("placement = \"{}\"\n", placement);

@@ -57,6 +57,9 @@ struct RunConfig {
   double initial_temperature = 1.0;  // resolved (also from initial.temperature_over_steady)
   std::optional<double> initial_temperature_over_steady;  // T_i / T₀ of (4.5), when given so
   bool initial_shear_profile = true;  // false: a static gas, sheared only from t = 0 on (§4.3)
+  // T_rot per rotational degree of freedom of rough grains' initial spins (resolved: default T_i,
+  // equipartition; 0 for smooth grains).
+  double initial_rotational_temperature = 0.0;
   std::optional<InitialSource> initial_from;
   double equilibrate = 0.0;      // elastic collisions per particle before e is switched on
   Placement placement = Placement::kAuto;
@@ -86,6 +89,12 @@ ConfigResult load_config_file(const std::string& path, const std::vector<std::st
 // The per-particle diameters and masses of the run (drawn from its seed; empty when monodisperse),
 // for make_initial_state.
 ParticleSizes particle_sizes(const RunConfig& config);
+
+// "periodic", "lees-edwards" or "walls" (boundary.kind).
+std::string boundary_kind_name(const RunConfig& config);
+// U of a wall-driven shear: the upper y wall's velocity along x minus the lower one's (0 without
+// y walls; Lees–Edwards shear is SystemParams::shear_velocity).
+double wall_shear_velocity(const SystemParams& system);
 
 // The fully resolved configuration as TOML, so that any run can be repeated exactly.
 std::string to_toml(const RunConfig& config);

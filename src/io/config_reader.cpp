@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace granule {
@@ -184,6 +185,27 @@ std::optional<std::vector<double>> ConfigReader::number_list(const std::string& 
 bool ConfigReader::holds_text(const std::string& path) const {
   const toml::node* node = find(path);
   return node && node->is_string();
+}
+
+bool ConfigReader::holds_list(const std::string& path) const {
+  const toml::node* node = find(path);
+  return node && node->is_array();
+}
+
+std::optional<std::vector<std::string>> ConfigReader::text_list(const std::string& path, const std::set<std::string>& allowed,
+                                                                const std::string& why) const {
+  const toml::node* node = find(path);
+  if (!node) return std::nullopt;
+  std::vector<std::string> out;
+  const toml::array* array = node->as_array();
+  for (std::size_t k = 0; array && k < array->size(); ++k) {
+    const auto value = (*array)[k].value<std::string>();
+    if (!value || !allowed.count(*value) || std::find(out.begin(), out.end(), *value) != out.end()) break;
+    out.push_back(*value);
+  }
+  if (array && !out.empty() && out.size() == array->size()) return out;
+  throw ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty list of distinct names among {}{}", path,
+                                show_node(*node), join(allowed), why)};
 }
 
 std::optional<bool> ConfigReader::boolean(const std::string& path) const {

@@ -49,6 +49,11 @@ class ConfigReader {
                                                  const std::string& shape, const std::string& why = {}) const;
   // Whether the value at `path` is a string (for keys that take a word or a list).
   bool holds_text(const std::string& path) const;
+  // Whether the value at `path` is a list (for keys that take a number or a list).
+  bool holds_list(const std::string& path) const;
+  // A non-empty list of distinct strings, each among `allowed`; `why` is appended to the message.
+  std::optional<std::vector<std::string>> text_list(const std::string& path, const std::set<std::string>& allowed,
+                                                    const std::string& why = {}) const;
   std::optional<bool> boolean(const std::string& path) const;
   // A list of windows [[low, high], ...] with 0 ≤ low < high, both finite.
   std::vector<std::pair<double, double>> windows(const std::string& path) const;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "io/config_walls.hpp"
 #include "io/input_ranges.hpp"
 #include "theory/steady_shear.hpp"
 
@@ -27,15 +28,22 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
   // Any finite U₀ here: its range depends on T_i, checked in resolve_speeds.
   const auto u0 = in.number_if("boundary.shear_velocity", [](double) { return true; }, speeds);
   if (!c.lees_edwards) {
-    if (u0.value_or(0.0) != 0.0) {
-      throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\" (a periodic "
-                                    "box has no shear; allowed: 0)", *u0)};
+    // Walls on y carry a steady shear themselves (moving at ±U/2); the images stay at rest.
+    const bool wall_driven = c.system.walls[1];
+    if (u0.value_or(0.0) != 0.0 && !wall_driven) {
+      throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\", or \"walls\" "
+                                    "with \"y\" in boundary.wall_axes (a periodic direction has no shear; allowed: 0)", *u0)};
     }
+    const std::string why = c.system.has_walls() ? "walls move at a constant ±U/2: time-dependent wall drives (ramps, "
+                                                   "schedules, oscillations) are not supported yet"
+                                                 : "a periodic box has no shear";
     for (const char* key : kShearKeys) {
       if (in.has(key) && std::string(key) != "boundary.shear_velocity") {
-        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\" (a periodic box has no shear)", key)};
+        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\" ({})", key, why)};
       }
     }
+    if (wall_driven) set_wall_shear(c.system, u0.value_or(0.0));
+    return 0.0;
   }
   for (const auto& [t, u] : in.number_pairs("boundary.shear_schedule", "[t, U]")) {
     if (!kTimes.contains(t) || !speed_allowed(u) || (!h.schedule.empty() && t < h.schedule.back().time)) {
@@ -78,7 +86,9 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
 
 void resolve_speeds(const ConfigReader& in, RunConfig& c) {
   SystemParams& s = c.system;
-  c.lees_edwards = in.text("boundary.kind", {"periodic", "lees-edwards"}).value_or("periodic") == "lees-edwards";
+  const std::string kind = in.text("boundary.kind", {"periodic", "lees-edwards", "walls"}).value_or("periodic");
+  c.lees_edwards = kind == "lees-edwards";
+  resolve_walls(in, kind == "walls", c);
   s.shear_velocity = resolve_protocol(in, c);
   c.initial_shear_profile = in.boolean("initial.shear_profile").value_or(true);
 
@@ -120,9 +130,9 @@ void resolve_speeds(const ConfigReader& in, RunConfig& c) {
 std::string speeds_to_toml(const RunConfig& c) {
   const SystemParams& s = c.system;
   const ShearHistory& h = s.shear_history;
-  std::string out = fmt::format("[boundary]\nkind = \"{}\"\n", c.lees_edwards ? "lees-edwards" : "periodic");
+  std::string out = fmt::format("[boundary]\nkind = \"{}\"\n", boundary_kind_name(c)) + walls_to_toml(c);
   if (h.schedule.empty()) {
-    out += fmt::format("shear_velocity = {:.17g}\n", s.shear_velocity);
+    out += fmt::format("shear_velocity = {:.17g}\n", s.walls[1] ? wall_shear_velocity(s) : s.shear_velocity);
   } else {
     std::string points;
     for (const ShearSchedulePoint& p : h.schedule) points += fmt::format("{}[{:.17g}, {:.17g}]", points.empty() ? "" : ", ", p.time, p.velocity);

@@ -1,6 +1,6 @@
-// The [boundary] shear drive and the speeds of [initial] (split from config.cpp): the protocol of
-// thesis Chapter 4 (ramp, schedule, oscillation), U and T_i within the numerical ranges, and T_i
-// as a multiple of the steady T₀ of (4.5).
+// The [boundary] kind and shear drive and the speeds of [initial] (split from config.cpp): the
+// protocol of thesis Chapter 4 (ramp, schedule, oscillation), or the steady ±U/2 of walls on y,
+// U and T_i within the numerical ranges, and T_i as a multiple of the steady T₀ of (4.5).
 #pragma once
 
 #include "io/config.hpp"

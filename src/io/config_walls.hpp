@@ -1,0 +1,26 @@
+// The flat walls of [boundary] (kind = "walls") and the uniform gravity of [system] (issue 15,
+// ARCHITECTURE.md "Spin, walls and gravity"): which axes end in walls, each wall's normal and
+// tangential restitution, the wall velocities of a wall-driven shear, and g.
+#pragma once
+
+#include <string>
+
+#include "io/config.hpp"
+#include "io/config_reader.hpp"
+
+namespace granule {
+
+// Needs the geometry resolved (dimension, box, largest diameter).  `walls`: boundary.kind is
+// "walls"; otherwise every wall key is an error.
+void resolve_walls(const ConfigReader& in, bool walls, RunConfig& c);
+// A wall-driven shear U: the y walls move along x at −U/2 (at y = 0) and +U/2 (at y = L_y).
+void set_wall_shear(SystemParams& s, double shear_velocity);
+// The wall keys of [boundary] as TOML lines (none without walls).
+std::string walls_to_toml(const RunConfig& c);
+
+// Needs the dimension and the boundary kind resolved (gravity along y is refused with Lees–Edwards).
+void resolve_gravity(const ConfigReader& in, RunConfig& c);
+// system.gravity as a TOML line of [system] (none without gravity).
+std::string gravity_to_toml(const RunConfig& c);
+
+}  // namespace granule
