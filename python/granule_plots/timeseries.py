@@ -1,7 +1,7 @@
 """Global diagnostics from timeseries.csv (thesis Figs 2.5-2.7, 3.6): c against t, the kinetic energy
 E and the mean temperature T̄ against c and t, flatness κ (eq 1.8), asymmetry, kinetic and
 collisional pressure and the collision rate.  For periodic (free-cooling) runs E(c) is drawn beside
-the homogeneous law ln T = ln T₀ − (1 − ẽ²) c.  A 13.5 × 10.5 inch figure of nine panels."""
+the homogeneous law ln T = ln T₀ − (1 − ẽ²) c; rough grains add T_rot beside T̄.  A 13.5 × 10.5 inch figure of nine panels."""
 import csv
 
 import numpy as np
@@ -55,7 +55,10 @@ def main():
     ax.set(xlabel="c", ylabel="κ", title="(D) flatness (1.8); 2 for a Maxwellian")
 
     ax = axes[4]
-    ax.semilogy(c, data["temperature"])
+    ax.semilogy(c, data["temperature"], label="T̄")
+    if "rotational_temperature" in data:  # rough grains: the spin's share beside it
+        ax.semilogy(c, data["rotational_temperature"], label="T_rot = I⟨|ω|²⟩/d_rot")
+        ax.legend(fontsize=8)
     ax.set(xlabel="c", ylabel="T̄", title="(E) mean temperature")
 
     ax = axes[5]

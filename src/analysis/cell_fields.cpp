@@ -22,8 +22,8 @@ auto& symmetric_entry(Tensor& xx, Tensor& xy, Tensor& xz, Tensor& yy, Tensor& yz
 
 }  // namespace
 
-CellMoments::CellMoments(const FieldGrid& g)
-    : grid(g), count(g.cells()), px(g.cells()), py(g.cells()), pxx(g.cells()), pxy(g.cells()), pyy(g.cells()),
+CellMoments::CellMoments(const FieldGrid& g, const SpinInertia& spin_inertia)
+    : grid(g), inertia(spin_inertia), count(g.cells()), px(g.cells()), py(g.cells()), pxx(g.cells()), pxy(g.cells()), pyy(g.cells()),
       energy_flux_x(g.cells()), energy_flux_y(g.cells()), pz(cells_if(g.dimension == 3, g)),
       pxz(cells_if(g.dimension == 3, g)), pyz(cells_if(g.dimension == 3, g)), pzz(cells_if(g.dimension == 3, g)),
       energy_flux_z(cells_if(g.dimension == 3, g)) {}
@@ -36,6 +36,8 @@ std::vector<double>& CellFields::kinetic(int a, int b) {
 
 namespace {
 
+constexpr const char* kSpinMomentNames[3] = {"spin_x", "spin_y", "spin_z"};
+
 // The moment arrays with their checkpoint names, in one list: the 2D set (a 2D checkpoint is what
 // it was before 3D existed), the z components in 3D, Σm when masses were seen.
 template <typename Moments>
@@ -47,6 +49,11 @@ auto moment_arrays(Moments& m) {
     arrays.insert(arrays.end(), {{"pz", &m.pz}, {"pxz", &m.pxz}, {"pyz", &m.pyz}, {"pzz", &m.pzz}, {"energy_flux_z", &m.energy_flux_z}});
   }
   if (!m.mass.empty()) arrays.emplace_back("mass", &m.mass);
+  if (m.rough()) {
+    arrays.emplace_back("inertia_sum", &m.inertia_sum);
+    for (int k = first_spin_axis(m.grid.dimension); k < 3; ++k) arrays.emplace_back(kSpinMomentNames[k], &m.spin(k));
+    arrays.emplace_back("spin_square", &m.spin_square);
+  }
   return arrays;
 }
 
@@ -62,6 +69,7 @@ void CellMoments::save(StateArchive& archive, const std::string& prefix) const {
 void CellMoments::restore(const StateArchive& archive, const std::string& prefix) {
   configurations = static_cast<int>(archive.integer(prefix + "configurations"));
   if (archive.contains(prefix + "mass")) mass.resize(grid.cells());
+  if (archive.contains(prefix + "inertia_sum")) start_spin_moments();
   for (const auto& [name, values] : moment_arrays(*this)) {
     *values = archive.get_sized<double>(prefix + name, grid.cells());
   }
@@ -73,6 +81,9 @@ void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool 
     throw std::invalid_argument("a " + std::to_string(state.dimension) + "D configuration on a " + std::to_string(d) + "D field grid");
   }
   if (!state.mass.empty() && mass.empty()) mass = count;  // the unit masses added so far
+  // Spins are summed when the moment of inertia is known (analyses that need no spin fields pass none).
+  const bool with_spin = state.rough() && inertia.inertia_factor > 0.0;
+  if (with_spin && !rough()) start_spin_moments();  // the smooth configurations added so far did not spin
   std::array<std::vector<double>*, 3> p{}, flux{};
   std::array<std::array<std::vector<double>*, 3>, 3> second{};
   for (int a = 0; a < d; ++a) {
@@ -94,8 +105,25 @@ void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool 
       for (int b = a; b < d; ++b) (*second[a][b])[c] += m * v[a] * v[b];
       (*flux[a])[c] += m * speed2 * v[a];
     }
+    if (with_spin) add_spin(state, i, c);
   }
   ++configurations;
+}
+
+void CellMoments::start_spin_moments() {
+  inertia_sum.assign(grid.cells(), 0.0);
+  for (int k = first_spin_axis(grid.dimension); k < 3; ++k) spin(k).assign(grid.cells(), 0.0);
+  spin_square.assign(grid.cells(), 0.0);
+}
+
+void CellMoments::add_spin(const ParticleState& state, std::size_t i, std::size_t c) {
+  const double moment = inertia.of(state, i);
+  inertia_sum[c] += moment;
+  for (int k = first_spin_axis(grid.dimension); k < 3; ++k) {
+    const double w = state.spin(k)[i];
+    spin(k)[c] += moment * w;
+    spin_square[c] += moment * w * w;
+  }
 }
 
 namespace {
@@ -130,6 +158,26 @@ void fill_vorticity(CellFields& f, const ShearFrame& frame, double shear_offset,
         f.vorticity[g.index_of_cell(ix, iy, iz)] = (right - left) / (2.0 * g.cell_width()) - (above - below) / (2.0 * g.cell_height());
       }
     }
+  }
+}
+
+// Ω(r) = Σ I ω / Σ I and T_rot(r) = (Σ I|ω|² − Σ I |Ω|²) / (d_rot · count), the rotational
+// analogue of (1.3) with (1.5)'s identity.
+void fill_spin_fields(CellFields& f, const CellMoments& m) {
+  const FieldGrid& g = f.grid;
+  const int first = first_spin_axis(g.dimension);
+  const double rotational_degrees = 3 - first;
+  f.rough = true;
+  for (int k = first; k < 3; ++k) f.spin(k).assign(g.cells(), 0.0);
+  f.rotational_temperature.assign(g.cells(), 0.0);
+  for (std::size_t c = 0; c < g.cells(); ++c) {
+    if (m.inertia_sum[c] == 0.0) continue;
+    double mean_square = 0.0;
+    for (int k = first; k < 3; ++k) {
+      const double mean = f.spin(k)[c] = m.spin(k)[c] / m.inertia_sum[c];
+      mean_square += mean * mean;
+    }
+    f.rotational_temperature[c] = (m.spin_square[c] - m.inertia_sum[c] * mean_square) / (rotational_degrees * m.count[c]);
   }
 }
 
@@ -184,6 +232,7 @@ CellFields fields_from_moments(const CellMoments& m, const ShearFrame& frame, do
     }
   }
   fill_vorticity(f, frame, shear_offset, shear_profile_subtracted);
+  if (m.rough()) fill_spin_fields(f, m);
   return f;
 }
 

@@ -7,6 +7,11 @@
 // then V, τ^(k), T and q^(k) are mass-weighted and ρ stays the number density.  In 2D with unit
 // masses every value is computed as before 3D existed, operation for operation.
 //
+// Rough grains (issue 15) add the mean angular velocity Ω(r) = Σ I ω / Σ I (per component: ω_z
+// of disks, ω_x, ω_y, ω_z of spheres) and the rotational temperature T_rot(r) = Σ I|ω − Ω|² /
+// (d_rot · count), d_rot = 1 for disks and 3 for spheres, I = q m σ²/4 — the rotational analogue
+// of (1.3), the spin fluctuation about the cell's mean spin.
+//
 // Fields come from cell moments (count, Σmv, Σmvv, Σm|v|²v).  Moments add up, so the same code gives
 // the instantaneous fields of one configuration and the interval-averaged fields of many (sums over
 // K configurations, ρ divided by K): V and T are then mass-weighted averages, as the ensemble
@@ -22,16 +27,36 @@
 
 namespace granule {
 
+// The moment of inertia of grain i, I = q m σ²/4 (q = RoughnessParams::inertia_factor), with σ the
+// grain's own diameter when the state carries diameters, else the monodisperse `diameter`.
+struct SpinInertia {
+  double inertia_factor = 0.0;  // q; 0: unknown (moments of smooth grains only)
+  double diameter = 0.0;        // σ of a monodisperse system
+  double of(const ParticleState& state, std::size_t i) const {
+    const double sigma = state.diameter_of(i, diameter);
+    return 0.25 * inertia_factor * state.mass_of(i) * sigma * sigma;
+  }
+};
+inline SpinInertia spin_inertia(const SystemParams& system) { return {system.roughness.inertia_factor, system.diameter}; }
+
 struct CellMoments {
   FieldGrid grid;
+  SpinInertia inertia;
   int configurations = 0;  // how many configurations were added
   std::vector<double> count, px, py, pxx, pxy, pyy;
   std::vector<double> energy_flux_x, energy_flux_y;  // Σ m|v|² v: the third moments of q^(k)
   std::vector<double> pz, pxz, pyz, pzz, energy_flux_z;  // 3D only (empty in 2D)
   // Σ m per cell: kept only once a configuration with masses was added (with unit masses it is `count`).
   std::vector<double> mass;
+  // Rough grains only, kept once a configuration with spins was added: Σ I, Σ I ω_k (k over the
+  // spin components: z alone for disks) and Σ I|ω|².
+  std::vector<double> inertia_sum, spin_x, spin_y, spin_z, spin_square;
 
-  explicit CellMoments(const FieldGrid& g);
+  // With `inertia` (q > 0), configurations of rough grains add their spins; without, spins are ignored.
+  explicit CellMoments(const FieldGrid& g, const SpinInertia& inertia = {});
+  bool rough() const { return !inertia_sum.empty(); }
+  std::vector<double>& spin(int k) { return k == 0 ? spin_x : (k == 1 ? spin_y : spin_z); }
+  const std::vector<double>& spin(int k) const { return const_cast<CellMoments&>(*this).spin(k); }
   // Add one configuration (of the grid's dimension).  With `subtract_shear_profile`, each
   // particle's velocity is taken relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of
   // `frame` before it is summed.
@@ -46,7 +71,14 @@ struct CellMoments {
   const std::vector<double>& second_moment(int a, int b) const { return const_cast<CellMoments&>(*this).second_moment(a, b); }
   std::vector<double>& energy_flux(int a) { return a == 0 ? energy_flux_x : (a == 1 ? energy_flux_y : energy_flux_z); }
   const std::vector<double>& energy_flux(int a) const { return const_cast<CellMoments&>(*this).energy_flux(a); }
+
+ private:
+  void start_spin_moments();
+  void add_spin(const ParticleState& state, std::size_t i, std::size_t c);
 };
+
+// The axes about which grains of dimension d spin: z alone for disks, x, y, z for spheres.
+inline int first_spin_axis(int dimension) { return dimension == 3 ? 0 : 2; }
 
 struct CellFields {
   FieldGrid grid;
@@ -63,6 +95,11 @@ struct CellFields {
   std::vector<double> heat_flux_kinetic_x;  // q^(k) = Σ ½ m|v'|² v' / cell, v' = v − V(r); 0 in empty cells
   std::vector<double> heat_flux_kinetic_y;
   std::vector<double> velocity_z, kinetic_xz, kinetic_yz, kinetic_zz, heat_flux_kinetic_z;  // 3D only
+  // Rough grains only (empty otherwise): Ω(r) = Σ I ω / Σ I (spin_z alone for disks) and T_rot(r);
+  // 0 in empty cells.
+  std::vector<double> spin_x, spin_y, spin_z, rotational_temperature;
+  bool rough = false;
+  std::vector<double>& spin(int k) { return k == 0 ? spin_x : (k == 1 ? spin_y : spin_z); }
 
   std::vector<double>& velocity(int a) { return a == 0 ? velocity_x : (a == 1 ? velocity_y : velocity_z); }
   std::vector<double>& kinetic(int a, int b);
@@ -97,12 +134,20 @@ void for_each_field(Fields& f, Visit&& visit) {
   visit("vorticity", f.vorticity);
   visit("heat_flux_kinetic_x", f.heat_flux_kinetic_x);
   visit("heat_flux_kinetic_y", f.heat_flux_kinetic_y);
-  if (f.grid.dimension != 3) return;
-  visit("velocity_z", f.velocity_z);
-  visit("kinetic_xz", f.kinetic_xz);
-  visit("kinetic_yz", f.kinetic_yz);
-  visit("kinetic_zz", f.kinetic_zz);
-  visit("heat_flux_kinetic_z", f.heat_flux_kinetic_z);
+  if (f.grid.dimension == 3) {
+    visit("velocity_z", f.velocity_z);
+    visit("kinetic_xz", f.kinetic_xz);
+    visit("kinetic_yz", f.kinetic_yz);
+    visit("kinetic_zz", f.kinetic_zz);
+    visit("heat_flux_kinetic_z", f.heat_flux_kinetic_z);
+  }
+  if (!f.rough) return;
+  if (f.grid.dimension == 3) {
+    visit("spin_x", f.spin_x);
+    visit("spin_y", f.spin_y);
+  }
+  visit("spin_z", f.spin_z);
+  visit("rotational_temperature", f.rotational_temperature);
 }
 
 // Streamwise averages over each row of cells (Figs 3.15–3.16; in 3D over x and z): ρ(y) the row

@@ -10,13 +10,18 @@ namespace granule {
 namespace {
 
 // The per-cell sums with their checkpoint names, in one list: the 2D set, then the z components in 3D.
+// With `full`, the entries below the diagonal follow.
 template <typename Sums>
-auto sum_arrays(Sums& s, int dimension) {
+auto sum_arrays(Sums& s, int dimension, bool full) {
   std::vector<std::pair<const char*, decltype(&s.xx)>> arrays{
       {"sum_xx", &s.xx},           {"sum_xy", &s.xy},           {"sum_yy", &s.yy},
       {"sum_energy_x", &s.energy_x}, {"sum_energy_y", &s.energy_y}, {"count", &s.collisions}};
   if (dimension == 3) {
     arrays.insert(arrays.end(), {{"sum_xz", &s.xz}, {"sum_yz", &s.yz}, {"sum_zz", &s.zz}, {"sum_energy_z", &s.energy_z}});
+  }
+  if (full) {
+    arrays.emplace_back("sum_yx", &s.yx);
+    if (dimension == 3) arrays.insert(arrays.end(), {{"sum_zx", &s.zx}, {"sum_zy", &s.zy}});
   }
   return arrays;
 }
@@ -33,6 +38,7 @@ std::size_t cell_of(const FieldGrid& grid, const Vec<D>& p) {
 }  // namespace
 
 std::vector<double>& CollisionalStress::component(int a, int b) {
+  if (a > b && full()) return a == 1 ? yx : (b == 0 ? zx : zy);
   if (a > b) std::swap(a, b);
   if (b == 2) return a == 0 ? xz : (a == 1 ? yz : zz);
   return a == 0 ? (b == 0 ? xx : xy) : yy;
@@ -53,9 +59,10 @@ Vec<D> pair_velocity_at_contact(const CollisionRecord<D>& r, double diameter, do
 }
 
 template <int D>
-CollisionalStressField<D>::CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter)
-    : grid_(grid), diameter_(diameter) {
-  for (const auto& [name, values] : sum_arrays(sums_, D)) values->assign(grid.cells(), 0.0);
+CollisionalStressField<D>::CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter, bool rough)
+    : grid_(grid), diameter_(diameter), rough_(rough) {
+  if (rough_) sums_.yx.assign(grid.cells(), 0.0);  // full() before the list is taken
+  for (const auto& [name, values] : sum_arrays(sums_, D, rough_)) values->assign(grid.cells(), 0.0);
 }
 
 template <int D>
@@ -67,18 +74,30 @@ void CollisionalStressField<D>::on_collision(const CollisionRecord<D>& r) {
   const Vec<D> s = pair_velocity_at_contact(r, diameter_.value_or(r.contact_distance), grid_.length_y);
   double along = dot(k, s);  // k̂·s, plus the energy the unequal masses carry across (header)
   if (r.first_mass != r.second_mass) along += 0.25 * r.impulse * (1.0 / r.second_mass - 1.0 / r.first_mass);
-  const double carried = j * along;
-  for (int a = 0; a < D; ++a) {
-    for (int b = a; b < D; ++b) sums_.component(a, b)[c] += j * k[a] * k[b];
-    sums_.energy(a)[c] += carried * k[a];
+  double carried = j * along;
+  if (rough_) {
+    // σ_ij k̂_a P_t,b on every entry, and the energy P_t moves (header).
+    const double w = diameter_ ? 1.0 : r.contact_distance;
+    const Vec<D>& pt = r.tangential_impulse;
+    double tangential_along = dot(pt, s);
+    if (r.first_mass != r.second_mass) tangential_along += 0.25 * dot(pt, pt) * (1.0 / r.second_mass - 1.0 / r.first_mass);
+    carried += w * tangential_along;
+    for (int a = 0; a < D; ++a) {
+      for (int b = 0; b < D; ++b) sums_.component(a, b)[c] += j * k[a] * k[b] + w * k[a] * pt[b];
+    }
+  } else {
+    for (int a = 0; a < D; ++a) {
+      for (int b = a; b < D; ++b) sums_.component(a, b)[c] += j * k[a] * k[b];
+    }
   }
+  for (int a = 0; a < D; ++a) sums_.energy(a)[c] += carried * k[a];
   sums_.collisions[c] += 1.0;
 }
 
 template <int D>
 void CollisionalStressField<D>::restart(double t) {
   start_ = t;
-  for (const auto& [name, values] : sum_arrays(sums_, D)) std::fill(values->begin(), values->end(), 0.0);
+  for (const auto& [name, values] : sum_arrays(sums_, D, rough_)) std::fill(values->begin(), values->end(), 0.0);
 }
 
 template <int D>
@@ -86,7 +105,7 @@ CollisionalStress CollisionalStressField<D>::stress(double t) const {
   CollisionalStress out = sums_;
   out.interval = t - start_;
   const double scale = out.interval > 0.0 ? diameter_.value_or(1.0) / (grid_.cell_volume() * out.interval) : 0.0;
-  for (const auto& [name, values] : sum_arrays(out, D)) {
+  for (const auto& [name, values] : sum_arrays(out, D, rough_)) {
     if (values == &out.collisions) continue;
     for (double& x : *values) x *= scale;
   }
@@ -96,13 +115,13 @@ CollisionalStress CollisionalStressField<D>::stress(double t) const {
 template <int D>
 void CollisionalStressField<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_scalar(prefix + "start", start_);
-  for (const auto& [name, values] : sum_arrays(sums_, D)) archive.put(prefix + name, *values);
+  for (const auto& [name, values] : sum_arrays(sums_, D, rough_)) archive.put(prefix + name, *values);
 }
 
 template <int D>
 void CollisionalStressField<D>::restore(const StateArchive& archive, const std::string& prefix) {
   start_ = archive.scalar(prefix + "start");
-  for (const auto& [name, values] : sum_arrays(sums_, D)) *values = archive.get_sized<double>(prefix + name, grid_.cells());
+  for (const auto& [name, values] : sum_arrays(sums_, D, rough_)) *values = archive.get_sized<double>(prefix + name, grid_.cells());
 }
 
 HeatFlux collisional_heat_flux(const CollisionalStress& s, const std::vector<double>& reference_x,

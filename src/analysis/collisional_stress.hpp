@@ -32,6 +32,13 @@
 //
 // In 2D every value is what it was before spheres existed, operation for operation: the sums are
 // Σ J k̂ k̂ (σ_ij/σ = 1 is not multiplied in) scaled by σ/(V t).
+//
+// Rough grains (issue 15): the momentum given to particle 2 is P = J k̂ + P_t (the record's
+// tangential_impulse), so τ^(c)_ab = 1/(V t) Σ σ_ij k̂_a P_b — no longer symmetric: its entries below
+// the diagonal (yx, zx, zy) are kept as well, τ_yx being the flux of x momentum along y (what a y
+// wall feels).  The trace, and the pressure, are unchanged (P_t ⊥ k̂).  The energy carried is the
+// translational one, σ_ij k̂ [P·s + |P|² (1/m₂ − 1/m₁)/4] (the same derivation with P in place of
+// J k̂); the exchange of rotational energy is not in q^(c).
 #pragma once
 
 #include <optional>
@@ -46,13 +53,16 @@
 namespace granule {
 
 struct CollisionalStress {
-  std::vector<double> xx, xy, yy;  // per cell
+  std::vector<double> xx, xy, yy;  // per cell: τ_ab = Σ σ k̂_a P_b (a ≤ b)
   std::vector<double> collisions;  // collisions per cell in the interval
   double interval = 0.0;           // t: length of the averaging interval
   std::vector<double> energy_x, energy_y;  // 1/(V t) Σ σ_ij J k̂ (k̂·s + …): the lab-frame energy transfer
   std::vector<double> xz, yz, zz, energy_z;  // 3D only (empty in 2D)
+  std::vector<double> yx, zx, zy;  // rough grains only: the entries below the diagonal (zx, zy in 3D)
 
-  // τ^(c)_ab (either order) and the energy transfer by axis (0 = x, 1 = y, 2 = z).
+  bool full() const { return !yx.empty(); }
+  // τ^(c)_ab, the lower entries from the upper ones unless the tensor is full, and the energy
+  // transfer by axis (0 = x, 1 = y, 2 = z).
   std::vector<double>& component(int a, int b);
   const std::vector<double>& component(int a, int b) const { return const_cast<CollisionalStress&>(*this).component(a, b); }
   std::vector<double>& energy(int a) { return a == 0 ? energy_x : (a == 1 ? energy_y : energy_z); }
@@ -65,7 +75,8 @@ struct CollisionalStress {
 template <int D>
 class CollisionalStressField final : public EventObserver<D> {
  public:
-  CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter);
+  // `rough`: collisions carry tangential impulses (the full tensor is kept).
+  CollisionalStressField(const FieldGrid& grid, std::optional<double> diameter, bool rough = false);
   void on_collision(const CollisionRecord<D>& record) override;
   // Start a new averaging interval at time t.
   void restart(double t);
@@ -78,6 +89,7 @@ class CollisionalStressField final : public EventObserver<D> {
  private:
   FieldGrid grid_;
   std::optional<double> diameter_;
+  bool rough_ = false;
   double start_ = 0.0;
   CollisionalStress sums_;  // unscaled sums Σ (σ_ij/σ) J k̂k̂, Σ (σ_ij/σ) J k̂ (k̂·s + …) and counts of the open interval
 };

@@ -108,7 +108,7 @@ void export_snapshot_fields(const ExportArguments& a, const std::string& snapsho
     const SystemParams& p = s.metadata.system;
     const ShearFrame box{p.length_x, p.length_y, s.metadata.boundary == "lees-edwards" ? p.shear_velocity : 0.0};
     const FieldGrid grid = snapshot_field_grid(p, a.cells);
-    CellMoments moments(grid);
+    CellMoments moments(grid, spin_inertia(p));
     moments.add(s.frame.particles, box, a.relative);
     const CellFields fields = fields_from_moments(moments, box, s.frame.shear_offset, a.relative);
     std::vector<NamedCellArray> arrays;

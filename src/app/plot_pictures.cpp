@@ -52,7 +52,7 @@ void refuse_given(const PictureArguments& a, const char* const (&options)[N], co
 int plot_config_3d(const PictureArguments& a, const std::string& snapshots) {
   refuse_given(a, kOptions2dOnly, "2D");
   const bool color_given = std::find(a.given.begin(), a.given.end(), "--color") != a.given.end();
-  if (color_given && (a.color == "direction" || a.color == "field")) {
+  if (color_given && (a.color == "direction" || a.color == "field" || a.color == "spin")) {
     throw BadPlotInput(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
   }
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
@@ -67,7 +67,8 @@ void add_picture_options(CLI::App* command, PictureArguments& a) {
   command->add_option("--width", a.width, "Picture width in pixels, 16 … 20000 (the height follows the box)")
       ->capture_default_str();
   command->add_option("--color", a.color,
-                      "Disk colours: direction (hue wheel, thesis Fig 1.1), speed, field (a cell field), none")
+                      "Disk colours: direction (hue wheel, thesis Fig 1.1), speed, field (a cell field), spin (ω_z on a "
+                      "scale centred on 0, thesis Fig C.4; the default for rough grains), none")
       ->capture_default_str();
   command->add_option("--field", a.field,
                       "Cell field for --color field: density, temperature, velocity_x, velocity_y, kinetic_xx, "
@@ -85,7 +86,7 @@ render::PictureOptions picture_options(const PictureArguments& a) {
   render::PictureOptions o;
   if (a.width < 16 || a.width > 20000) throw BadPlotInput(fmt::format("--width {} is outside [16, 20000]", a.width));
   const auto coloring = render::parse_disk_coloring(a.color);
-  if (!coloring) throw BadPlotInput(fmt::format("--color {} is not one of direction, speed, field, none", a.color));
+  if (!coloring) throw BadPlotInput(fmt::format("--color {} is not one of direction, speed, field, spin, none", a.color));
   const auto& names = render::cell_field_names();
   if (std::find(names.begin(), names.end(), a.field) == names.end()) {
     throw BadPlotInput(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
@@ -108,13 +109,25 @@ render::PictureOptions picture_options(const PictureArguments& a) {
   return o;
 }
 
+// Rough grains are coloured by their spin unless --color says otherwise (thesis Fig C.4); spin
+// colours for smooth grains are bad input.
+void color_rough_grains_by_spin(render::PictureOptions& o, const PictureArguments& a, const SnapshotMetadata& m) {
+  const bool color_given = std::find(a.given.begin(), a.given.end(), "--color") != a.given.end();
+  if (!color_given && m.system.roughness.rough) o.coloring = render::DiskColoring::kSpin;
+  if (o.coloring == render::DiskColoring::kSpin && !m.system.roughness.rough) {
+    throw BadPlotInput("--color spin needs a run of rough grains (its snapshots have no spins)");
+  }
+}
+
 int plot_config(const PictureArguments& a) {
   const std::string snapshots = locate_run_file(a.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
   if (hdf5_dimension(snapshots) == 3) return plot_config_3d(a, snapshots);
   refuse_given(a, kOptions3dOnly, "3D");
-  const render::PictureOptions options = picture_options(a);
-  const std::int64_t frame = resolve_frame(a.frame, read_snapshot(snapshots, 0).frames);
+  render::PictureOptions options = picture_options(a);
+  const SnapshotRead first = read_snapshot(snapshots, 0);
+  color_rough_grains_by_spin(options, a, first.metadata);
+  const std::int64_t frame = resolve_frame(a.frame, first.frames);
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
   render::write_png(render_snapshot_picture(read_snapshot(snapshots, frame), options), out);
   fmt::print("wrote {} (frame {})\n", out, frame);
@@ -143,7 +156,9 @@ int plot_movie(const MovieArguments& m) {
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
   if (hdf5_dimension(snapshots) == 3) throw BadPlotInput("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
   refuse_given(m.picture, kOptions3dOnly, "3D");
-  const std::int64_t frames = read_snapshot(snapshots, 0).frames;
+  const SnapshotRead first = read_snapshot(snapshots, 0);
+  color_rough_grains_by_spin(options, m.picture, first.metadata);
+  const std::int64_t frames = first.frames;
   const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
   // Without the encoder the movie cannot be written: say so before drawing anything.
   if (!program_in_path("ffmpeg")) {

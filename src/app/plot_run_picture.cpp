@@ -11,7 +11,8 @@ namespace granule::app {
 render::RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const render::PictureOptions& options) {
   const SystemParams& s = snapshot.metadata.system;
   const ShearFrame box{s.length_x, s.length_y, snapshot.metadata.boundary == "lees-edwards" ? s.shear_velocity : 0.0};
-  return render::render_configuration({snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset}, options);
+  return render::render_configuration({snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset, {s.walls[0], s.walls[1]}},
+                                      options);
 }
 
 std::string render_run_picture(const std::string& out_dir) {
@@ -28,6 +29,7 @@ std::string render_run_picture(const std::string& out_dir) {
   render::PictureOptions options;
   // In a sheared box the mean flow dominates the lab velocities: the structure is in the rest.
   options.subtract_shear_profile = last.metadata.boundary == "lees-edwards";
+  if (last.frame.particles.rough()) options.coloring = render::DiskColoring::kSpin;  // thesis Fig C.4
   render::write_png(render_snapshot_picture(last, options), path);
   return path;
 }

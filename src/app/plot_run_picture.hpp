@@ -14,7 +14,7 @@ render::RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const 
 
 // Writes `<out_dir>/configuration.png`: the last snapshot of the run, disks coloured by velocity
 // direction with the coarse-grained velocity field as arrows (thesis Figs 2.2, 2.3); Lees–Edwards
-// runs are coloured relative to the mean shear flow; a 3D run gets the sphere picture of
+// runs are coloured relative to the mean shear flow, rough grains by their spin; a 3D run gets the sphere picture of
 // plot_config3d.hpp.  Returns the path written.
 std::string render_run_picture(const std::string& out_dir);
 

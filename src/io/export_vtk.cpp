@@ -80,6 +80,12 @@ void write_vtp_particles(const std::string& path, const ParticleState& p, double
   std::vector<double> radius(n);
   for (std::size_t i = 0; i < n; ++i) radius[i] = 0.5 * p.diameter_of(i, diameter);
   xml += data.add("type=\"Float64\" Name=\"radius\"", bytes_of(radius));
+  if (p.rough()) {
+    const std::vector<double> none(p.dimension == 3 ? 0 : n, 0.0);
+    const auto& wx = p.dimension == 3 ? p.wx : none;
+    const auto& wy = p.dimension == 3 ? p.wy : none;
+    xml += data.add("type=\"Float64\" Name=\"AngularVelocity\" NumberOfComponents=\"3\"", bytes_of(triples(wx, wy, p.wz)));
+  }
   xml += "</PointData>\n<Points>\n";
   xml += data.add("type=\"Float64\" Name=\"position\" NumberOfComponents=\"3\"", bytes_of(triples(p.x, p.y, p.z)));
   xml += "</Points>\n<Verts>\n";

@@ -14,7 +14,8 @@
 namespace granule {
 
 // Positions (x, y, z), "velocity" (v_x, v_y, v_z) (z = 0 in 2D) and "radius" σ/2 of each particle
-// (its own diameter when polydisperse, else `diameter`); the frame's time as TimeValue.
+// (its own diameter when polydisperse, else `diameter`), and for rough grains "AngularVelocity"
+// (ω_x, ω_y, ω_z; (0, 0, ω_z) for disks); the frame's time as TimeValue.
 void write_vtp_particles(const std::string& path, const ParticleState& particles, double diameter, double time);
 
 struct NamedCellArray {

@@ -6,7 +6,8 @@
 // radius is each particle's own σ/2 when polydisperse (the `radius` column, which OVITO reads as its
 // Radius property).  The comment line also records c (collisions_per_particle), the boundary and,
 // for Lees–Edwards, the image offset Δ (shear_offset, along x between the images above and below in
-// y) and U (shear_velocity): OVITO's box is plainly periodic.
+// y) and U (shear_velocity): OVITO's box is plainly periodic.  Rough grains add the angular velocity
+// as a last column triple `omega:R:3` (ω_x ω_y ω_z; 0 0 ω_z for disks).
 #pragma once
 
 #include <ostream>

@@ -26,7 +26,7 @@ StressFrame stress_frame(const FieldsFrame& frame, int dimension) {
   CellFields kinetic = frame.average;
   const std::size_t n = s.collisional.xx.size();
   for (int a = 0; a < dimension; ++a) {
-    for (int b = a; b < dimension; ++b) {
+    for (int b = s.collisional.full() ? 0 : a; b < dimension; ++b) {
       for (std::size_t i = 0; i < n; ++i) s.total.component(a, b)[i] = kinetic.kinetic(a, b)[i] + s.collisional.component(a, b)[i];
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -40,9 +40,10 @@ StressFrame stress_frame(const FieldsFrame& frame, int dimension) {
   return s;
 }
 
-// The datasets of a StressFrame, in one list: the 2D set, then in 3D the z components.
+// The datasets of a StressFrame, in one list: the 2D set, then in 3D the z components; then
+// (for_each_stress) the entries below the diagonal of a full (rough grains') tensor.
 template <typename Stress, typename Visit>
-void for_each_stress(Stress& s, int dimension, Visit&& visit) {
+void for_each_symmetric_stress(Stress& s, int dimension, Visit& visit) {
   visit("collisional_xx", s.collisional.xx);
   visit("collisional_xy", s.collisional.xy);
   visit("collisional_yy", s.collisional.yy);
@@ -65,6 +66,19 @@ void for_each_stress(Stress& s, int dimension, Visit&& visit) {
   visit("total_zz", s.total.zz);
   visit("heat_flux_collisional_z", s.heat_flux_collisional.z);
   visit("heat_flux_total_z", s.heat_flux_total.z);
+}
+
+template <typename Stress, typename Visit>
+void for_each_stress(Stress& s, int dimension, bool full, Visit&& visit) {
+  for_each_symmetric_stress(s, dimension, visit);
+  if (!full) return;
+  visit("collisional_yx", s.collisional.yx);
+  visit("total_yx", s.total.yx);
+  if (dimension != 3) return;
+  visit("collisional_zx", s.collisional.zx);
+  visit("collisional_zy", s.collisional.zy);
+  visit("total_zx", s.total.zx);
+  visit("total_zy", s.total.zy);
 }
 
 // Streamwise profiles of the interval-averaged heat flux (runs only), in one list.
@@ -109,7 +123,10 @@ void for_each_image_scalar(Frame& f, Visit&& visit) {
 }  // namespace
 
 FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const FieldsMetadata& m, bool with_collisional)
-    : file_(path, kFormat, kFormatVersion, m.version), grid_(grid), with_collisional_(with_collisional) {
+    : file_(path, kFormat, kFormatVersion, m.version),
+      grid_(grid),
+      with_collisional_(with_collisional),
+      rough_(m.system.roughness.rough) {
   const hid_t f = file_.get();
   write_string_attribute(f, "source", m.source);
   write_string_attribute(f, "boundary", m.boundary);
@@ -134,6 +151,7 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   const std::vector<hsize_t> rows{static_cast<hsize_t>(grid.ny)};
   FieldsFrame shape;
   shape.instant.grid = grid;
+  shape.instant.rough = rough_;
   for_each_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
   if (grid.dimension == 3) for_each_image_scalar(shape, [&](const char* name, double&) { add_frames(f, name, H5T_NATIVE_DOUBLE, {}); });
   add_frames(f, "/average/configurations", H5T_NATIVE_INT, {});
@@ -143,7 +161,7 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   });
   StressFrame stress;
   if (with_collisional_) {
-    for_each_stress(stress, grid.dimension, [&](const char* name, std::vector<double>&) {
+    for_each_stress(stress, grid.dimension, rough_, [&](const char* name, std::vector<double>&) {
       add_frames(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, cells);
     });
   }
@@ -163,10 +181,16 @@ FieldsWriter::FieldsWriter(const std::string& path, std::int64_t keep_frames)
   const htri_t collisional = H5Lexists(file_.get(), "/average/collisional_xx", H5P_DEFAULT);
   check(collisional, file_.get(), "look for", "/average/collisional_xx");
   with_collisional_ = collisional > 0;
+  const htri_t rough = H5Lexists(file_.get(), "/instant/rotational_temperature", H5P_DEFAULT);
+  check(rough, file_.get(), "look for", "/instant/rotational_temperature");
+  rough_ = rough > 0;
 }
 
 void FieldsWriter::append(const FieldsFrame& frame) {
   const hid_t f = file_.get();
+  if (frame.instant.rough != rough_ || frame.average.rough != rough_) {
+    throw std::logic_error("fields frame of rough grains in a file of smooth ones, or the reverse");
+  }
   const auto at = static_cast<hsize_t>(file_.frames());
   const auto append_scalar = [&](const char* name, const double& value) { append_frame(f, name, H5T_NATIVE_DOUBLE, &value, at); };
   for_each_scalar(frame, append_scalar);
@@ -182,8 +206,9 @@ void FieldsWriter::append(const FieldsFrame& frame) {
     if (!frame.collisional || !frame.heat_flux_collisional) {
       throw std::logic_error("fields frame without the collisional stress and heat flux");
     }
+    if (frame.collisional->full() != rough_) throw std::logic_error("fields frame whose collisional stress is not full for rough grains");
     const StressFrame stress = stress_frame(frame, grid_.dimension);
-    for_each_stress(stress, grid_.dimension, [&](const char* name, const std::vector<double>& v) {
+    for_each_stress(stress, grid_.dimension, rough_, [&](const char* name, const std::vector<double>& v) {
       append_frame(f, (std::string("/average/") + name).c_str(), H5T_NATIVE_DOUBLE, v.data(), at);
     });
     for_each_flux_profile(stress, grid_.dimension, [&](const char* name, const std::vector<double>& v) {

@@ -1,7 +1,8 @@
 // HDF5 file of coarse-grained fields (schema in README.md, "fields.h5"): per frame the
 // instantaneous fields of the configuration, the fields averaged over the interval since the
 // previous frame (with the collisional stress (1.6) and heat flux when collisions were observed),
-// and the streamwise profiles.  Maps are (K, ny, nx), in 3D (K, nz, ny, nx).  Written to `<name>.partial`, renamed by finish(); every failure throws
+// and the streamwise profiles; for rough grains (SystemParams::roughness) also the spin fields and
+// the full (non-symmetric) collisional stress.  Maps are (K, ny, nx), in 3D (K, nz, ny, nx).  Written to `<name>.partial`, renamed by finish(); every failure throws
 // IoError and leaves `<name>.partial`, never an incomplete `<name>`.
 #pragma once
 
@@ -53,6 +54,7 @@ class FieldsWriter {
   h5::PartialFile file_;
   FieldGrid grid_;
   bool with_collisional_ = false;
+  bool rough_ = false;  // rough grains: spin fields, and a full collisional stress tensor
 };
 
 // The coarse-graining grid of an open fields file (root attributes nx, ny, length_x, length_y; in

@@ -16,7 +16,9 @@ using namespace h5;
 constexpr const char* kFormat = "granule-snapshots";
 // 2: per-frame shear_velocity and strain_at_reference; 3: `dimension`, rows of d in positions and
 // velocities, `packing_fraction`, per-particle `diameters` and `masses` (polydisperse runs).
-// Files of version 2 (no `dimension`) are read as 2D.
+// Files of version 2 (no `dimension`) are read as 2D.  Issue 15 (rough grains, walls, gravity)
+// adds attributes and a `spins` dataset only to the files of runs that have them: their presence
+// says what the file holds, so the version stays 3 and files of other runs keep their bytes.
 constexpr int kFormatVersion = 3;
 
 // The per-frame scalars of the schema, in one list for writing and reading.
@@ -33,23 +35,81 @@ void for_each_scalar(Frame& frame, Visit&& visit) {
   visit("events", H5T_NATIVE_INT64, &frame.clock.events);
 }
 
-// Rows of d components per particle, as the (S, N, d) datasets store them.
-std::vector<double> interleave(const ParticleState& state, bool velocities) {
-  const int d = state.dimension;
-  std::vector<double> out(static_cast<std::size_t>(d) * state.size());
-  for (int a = 0; a < d; ++a) {
-    const std::vector<double>& component = velocities ? state.velocity(a) : state.position(a);
-    for (std::size_t i = 0; i < state.size(); ++i) out[static_cast<std::size_t>(d) * i + static_cast<std::size_t>(a)] = component[i];
+// Rows of `components` values per particle, as the (S, N, d) and (S, N, 3) datasets store them;
+// `column(a)` is the array of component a.
+template <typename Column>
+std::vector<double> interleave(std::size_t n, int components, Column&& column) {
+  const auto width = static_cast<std::size_t>(components);
+  std::vector<double> out(width * n);
+  for (std::size_t a = 0; a < width; ++a) {
+    const std::vector<double>& values = column(static_cast<int>(a));
+    for (std::size_t i = 0; i < n; ++i) out[width * i + a] = values[i];
   }
   return out;
 }
 
-void deinterleave(const std::vector<double>& rows, ParticleState& state, bool velocities) {
-  const int d = state.dimension;
-  for (int a = 0; a < d; ++a) {
-    std::vector<double>& component = velocities ? state.velocity(a) : state.position(a);
-    for (std::size_t i = 0; i < state.size(); ++i) component[i] = rows[static_cast<std::size_t>(d) * i + static_cast<std::size_t>(a)];
+template <typename Column>
+void deinterleave(const std::vector<double>& rows, std::size_t n, int components, Column&& column) {
+  const auto width = static_cast<std::size_t>(components);
+  for (std::size_t a = 0; a < width; ++a) {
+    std::vector<double>& values = column(static_cast<int>(a));
+    values.resize(n);
+    for (std::size_t i = 0; i < n; ++i) values[i] = rows[width * i + a];
   }
+}
+
+// The spin components in the order of the `spins` rows: ω_z of disks; ω_x, ω_y, ω_z of spheres.
+template <typename State>
+auto& spin_column(State& state, int k) { return state.spin(state.dimension == 3 ? k : 2); }
+
+// The issue-15 parameters as root attributes, each group only when the run has it: roughness
+// (`tangential_restitution` β, `inertia_factor` q, `friction` μ, +inf without a Coulomb limit),
+// walls (`walls` [x, y, z] 0/1, and per face 2·axis + side `wall_restitution`,
+// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3)), `gravity` [g_x, g_y, g_z].
+void write_issue15_attributes(hid_t f, const SystemParams& p) {
+  if (p.roughness.rough) {
+    write_attribute(f, "tangential_restitution", H5T_NATIVE_DOUBLE, &p.roughness.tangential_restitution);
+    write_attribute(f, "inertia_factor", H5T_NATIVE_DOUBLE, &p.roughness.inertia_factor);
+    write_attribute(f, "friction", H5T_NATIVE_DOUBLE, &p.roughness.friction);
+  }
+  if (p.has_walls()) {
+    const int walls[3] = {p.walls[0] ? 1 : 0, p.walls[1] ? 1 : 0, p.walls[2] ? 1 : 0};
+    write_attribute(f, "walls", H5T_NATIVE_INT, walls, 3);
+    double restitution[6], tangential[6], velocity[18];
+    for (std::size_t face = 0; face < 6; ++face) {
+      restitution[face] = p.wall[face].restitution;
+      tangential[face] = p.wall[face].tangential_restitution;
+      for (std::size_t a = 0; a < 3; ++a) velocity[3 * face + a] = p.wall[face].velocity[a];
+    }
+    write_attribute(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution, 6);
+    write_attribute(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential, 6);
+    write_attribute(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
+  }
+  if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+}
+
+void read_issue15_attributes(hid_t f, SystemParams& p) {
+  p.roughness.rough = has_attribute(f, "inertia_factor");
+  if (p.roughness.rough) {
+    p.roughness.tangential_restitution = read_attribute<double>(f, "tangential_restitution", H5T_NATIVE_DOUBLE);
+    p.roughness.inertia_factor = read_attribute<double>(f, "inertia_factor", H5T_NATIVE_DOUBLE);
+    p.roughness.friction = read_attribute<double>(f, "friction", H5T_NATIVE_DOUBLE);
+  }
+  if (has_attribute(f, "walls")) {
+    int walls[3] = {0, 0, 0};
+    read_attribute_values(f, "walls", H5T_NATIVE_INT, walls);
+    double restitution[6], tangential[6], velocity[18];
+    read_attribute_values(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution);
+    read_attribute_values(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential);
+    read_attribute_values(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity);
+    for (std::size_t a = 0; a < 3; ++a) p.walls[a] = walls[a] != 0;
+    for (std::size_t face = 0; face < 6; ++face) {
+      p.wall[face].restitution = restitution[face];
+      p.wall[face].tangential_restitution = tangential[face];
+      for (std::size_t a = 0; a < 3; ++a) p.wall[face].velocity[a] = velocity[3 * face + a];
+    }
+  }
+  if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data());
 }
 
 // The metadata of an open snapshot file.
@@ -73,6 +133,7 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
   m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
   m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
   m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
+  read_issue15_attributes(f, m.system);
   return m;
 }
 
@@ -81,7 +142,8 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
 SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& m)
     : file_(std::make_unique<PartialFile>(path, kFormat, kFormatVersion, m.version)),
       particles_(m.system.particles),
-      tc_(m.system.tc_duration > 0.0) {
+      tc_(m.system.tc_duration > 0.0),
+      rough_(m.system.roughness.rough) {
   const hid_t f = file_->get();
   write_attribute(f, "particles", H5T_NATIVE_INT64, &m.system.particles);
   write_attribute(f, "diameter", H5T_NATIVE_DOUBLE, &m.system.diameter);
@@ -107,6 +169,8 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
     add_frames(f, name, H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
   });
   if (tc_) add_frames(f, "last_collision", H5T_IEEE_F64LE, {n});
+  write_issue15_attributes(f, m.system);
+  if (rough_) add_frames(f, "spins", H5T_IEEE_F64LE, d == 3 ? std::vector<hsize_t>{n, 3} : std::vector<hsize_t>{n});
   file_->flush();
 }
 
@@ -115,6 +179,7 @@ SnapshotWriter::SnapshotWriter(const std::string& path, std::int64_t keep_frames
   const SnapshotMetadata m = read_metadata(file_->get(), path + ".partial");
   particles_ = m.system.particles;
   tc_ = m.system.tc_duration > 0.0;
+  rough_ = m.system.roughness.rough;
 }
 
 SnapshotWriter::~SnapshotWriter() = default;
@@ -124,10 +189,17 @@ std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
 void SnapshotWriter::append(const SnapshotFrame& frame) {
   const hid_t f = file_->get();
   const auto k = static_cast<hsize_t>(file_->frames());
-  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(frame.particles, false).data(), k);
-  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(frame.particles, true).data(), k);
+  const ParticleState& p = frame.particles;
+  const int d = p.dimension;
+  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(p.size(), d, [&](int a) -> auto& { return p.position(a); }).data(), k);
+  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(p.size(), d, [&](int a) -> auto& { return p.velocity(a); }).data(), k);
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
+  if (rough_) {
+    if (!frame.particles.rough()) throw std::logic_error("a frame of smooth grains in a snapshot file of rough ones");
+    const auto spins = interleave(p.size(), p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); });
+    append_frame(f, "spins", H5T_NATIVE_DOUBLE, spins.data(), k);
+  }
   file_->end_frame();
 }
 
@@ -156,10 +228,17 @@ SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
   }
   s.particles.resize(n);
   std::vector<double> buffer(static_cast<std::size_t>(m.system.dimension) * n);
+  ParticleState& p = s.particles;
+  const int d = m.system.dimension;
   read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  deinterleave(buffer, s.particles, false);
+  deinterleave(buffer, n, d, [&](int a) -> auto& { return p.position(a); });
   read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  deinterleave(buffer, s.particles, true);
+  deinterleave(buffer, n, d, [&](int a) -> auto& { return p.velocity(a); });
+  if (m.system.roughness.rough) {
+    std::vector<double> spins(static_cast<std::size_t>(p.spin_components()) * n);
+    read_frame(f, "spins", H5T_NATIVE_DOUBLE, spins.data(), frame);
+    deinterleave(spins, n, p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); });
+  }
   for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
   s.clock.protocol_running = true;  // frames are written in production only
   if (m.system.tc_duration > 0.0) {

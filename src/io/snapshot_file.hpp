@@ -18,7 +18,9 @@ class PartialFile;
 }
 
 struct SnapshotMetadata {
-  SystemParams system;          // with its dimension and L_z
+  // With its dimension and L_z, and the roughness, walls and gravity of issue 15 (rough runs
+  // write spins with every frame: the frame's ParticleState is then rough).
+  SystemParams system;
   double packing_fraction = 0.0;  // area fraction (2D) or volume fraction (3D)
   std::string boundary;  // "periodic" or "lees-edwards"
   std::uint64_t seed = 0;
@@ -62,6 +64,7 @@ class SnapshotWriter {
   std::unique_ptr<h5::PartialFile> file_;
   std::int64_t particles_ = 0;
   bool tc_ = false;
+  bool rough_ = false;
 };
 
 struct SnapshotRead {

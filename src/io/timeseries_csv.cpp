@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,9 +12,8 @@
 
 namespace granule {
 
-std::string timeseries_header() {
+std::string timeseries_header(const DiagnosticsSample& layout) {
   std::string header;
-  const DiagnosticsSample layout;
   for_each_column(layout, [&](const char* name, const double&) {
     if (!header.empty()) header += ',';
     header += name;
@@ -31,7 +31,7 @@ std::string timeseries_row(const DiagnosticsSample& s) {
 }
 
 void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples) {
-  std::string content = timeseries_header();
+  std::string content = samples.empty() ? timeseries_header() : timeseries_header(samples.front());
   for (const auto& sample : samples) content += timeseries_row(sample);
   write_file_atomically(path, content);
 }
@@ -41,11 +41,15 @@ std::vector<DiagnosticsSample> read_timeseries(const std::string& path) {
   if (!file) throw std::runtime_error("cannot read " + path);
   std::string line;
   std::getline(file, line);
-  if (line + "\n" != timeseries_header()) throw std::runtime_error(path + " has not the columns of this version");
+  std::vector<std::string> names;
+  std::istringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  const std::optional<DiagnosticsSample> layout = diagnostics_layout_of(names);
+  if (!layout) throw std::runtime_error(path + " has not the columns of this version");
   std::vector<DiagnosticsSample> samples;
   for (int number = 2; std::getline(file, line); ++number) {
     std::istringstream row(line);
-    DiagnosticsSample sample;
+    DiagnosticsSample sample = *layout;
     bool whole = true;
     for_each_column(sample, [&](const char*, double& value) {
       std::string cell;

@@ -8,11 +8,13 @@
 
 namespace granule {
 
-std::string timeseries_header();
+// The header of rows laid out as `layout` (its optional column groups: GlobalDiagnostics::layout()).
+std::string timeseries_header(const DiagnosticsSample& layout = {});
 std::string timeseries_row(const DiagnosticsSample& sample);
-// Rewrite the whole file atomically.
+// Rewrite the whole file atomically (the columns of the first sample; the plain ones if none).
 void write_timeseries(const std::string& path, const std::vector<DiagnosticsSample>& samples);
-// The rows of a file written by write_timeseries (values to the 12 digits it keeps).  Throws
+// The rows of a file written by write_timeseries (values to the 12 digits it keeps), with the
+// optional column groups its header names.  Throws
 // std::runtime_error naming the file and line when a row is not whole.
 std::vector<DiagnosticsSample> read_timeseries(const std::string& path);
 

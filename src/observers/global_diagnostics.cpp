@@ -1,5 +1,6 @@
 #include "observers/global_diagnostics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,11 +20,60 @@ double mean_cell_temperature(const CellFields& cells) {
   return occupied > 0 ? temperature_sum / occupied : 0.0;
 }
 
+// ⟨I|ω|²⟩ per particle (twice the rotational kinetic energy per particle).
+double mean_spin_energy(const ParticleState& state, const SpinInertia& inertia) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    double w2 = 0.0;
+    for (int k = first_spin_axis(state.dimension); k < 3; ++k) w2 += state.spin(k)[i] * state.spin(k)[i];
+    sum += inertia.of(state, i) * w2;
+  }
+  return sum / static_cast<double>(state.size());
+}
+
+// −⟨m g·r⟩ per particle: the potential energy in a uniform field g, zero at the box's origin.
+double mean_potential_energy(const ParticleState& state, const std::array<double, 3>& gravity) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    double g_dot_r = 0.0;
+    for (int a = 0; a < state.dimension; ++a) g_dot_r += gravity[static_cast<std::size_t>(a)] * state.position(a)[i];
+    sum -= state.mass_of(i) * g_dot_r;
+  }
+  return sum / static_cast<double>(state.size());
+}
+
 }  // namespace
+
+DiagnosticsSample diagnostics_layout(const SystemParams& params) {
+  DiagnosticsSample layout;
+  if (params.roughness.rough) layout.rotation = RotationSample{};
+  if (params.has_gravity()) layout.gravity = GravitySample{};
+  for (std::size_t face = 0; face < layout.walls.size(); ++face) {
+    if (params.walls[face / 2]) layout.walls[face] = WallFaceSample{};
+  }
+  return layout;
+}
+
+std::optional<DiagnosticsSample> diagnostics_layout_of(const std::vector<std::string>& names) {
+  const auto named = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  DiagnosticsSample layout;
+  if (named("rotational_temperature")) layout.rotation = RotationSample{};
+  if (named("potential_energy")) layout.gravity = GravitySample{};
+  for (int face = 0; face < 6; ++face) {
+    WallFaceSample probe;
+    const char* first = nullptr;
+    for_each_wall_column(face, probe, [&](const char* name, double&) { first = first ? first : name; });
+    if (named(first)) layout.walls[static_cast<std::size_t>(face)] = probe;
+  }
+  std::vector<std::string> columns;
+  for_each_column(layout, [&](const char* name, double&) { columns.emplace_back(name); });
+  if (columns != names) return std::nullopt;
+  return layout;
+}
 
 template <int D>
 GlobalDiagnostics<D>::GlobalDiagnostics(const SystemParams& params, const FieldGrid& cells)
-    : params_(params), frame_{params.length_x, params.length_y, params.shear_velocity}, grid_(cells) {}
+    : params_(params), frame_{params.length_x, params.length_y, params.shear_velocity}, grid_(cells), walls_(params) {}
 
 template <int D>
 void GlobalDiagnostics<D>::on_collision(const CollisionRecord<D>& record) {
@@ -31,6 +81,16 @@ void GlobalDiagnostics<D>::on_collision(const CollisionRecord<D>& record) {
   const double weight = record.impulse * (record.contact_distance / params_.diameter);
   impulse_sum_ += weight;
   impulse_xy_sum_ += weight * record.contact_normal.x * record.contact_normal.y;
+  if (params_.roughness.rough) {
+    // The tangential impulse moves x momentum across planes of constant y too: the stress is
+    // then not symmetric, and this column is the flux of x momentum along y (τ_yx, as a y wall feels).
+    impulse_xy_sum_ += (record.contact_distance / params_.diameter) * record.contact_normal.y * record.tangential_impulse.x;
+  }
+}
+
+template <int D>
+void GlobalDiagnostics<D>::on_wall_collision(const WallCollisionRecord<D>& record) {
+  walls_.add(record);
 }
 
 template <int D>
@@ -39,11 +99,12 @@ void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
   impulse_xy_sum_ = 0.0;
   interval_start_ = t;
   interval_collisions_ = collisions;
+  walls_.clear();
 }
 
 template <int D>
 CellFields GlobalDiagnostics<D>::cell_fields(const ParticleState& state, bool subtract_shear_profile) const {
-  CellMoments moments(grid_);
+  CellMoments moments(grid_, spin_inertia(params_));
   moments.add(state, frame_, subtract_shear_profile);
   return fields_from_moments(moments, frame_, 0.0, subtract_shear_profile);
 }
@@ -129,6 +190,16 @@ DiagnosticsSample GlobalDiagnostics<D>::sample(const ParticleState& state, doubl
   } else {
     for_each_flow_measure(out.flow, [](const char*, double& value) { value = std::numeric_limits<double>::quiet_NaN(); });
   }
+  const double spin_energy = params_.roughness.rough ? mean_spin_energy(state, spin_inertia(params_)) : 0.0;
+  if (params_.roughness.rough) {
+    const double rotational = spin_energy / (D == 3 ? 3.0 : 1.0);  // d_rot = 1 (disks), 3 (spheres)
+    out.rotation = RotationSample{rotational, rotational / out.temperature_global};
+  }
+  if (params_.has_gravity()) {
+    const double potential = mean_potential_energy(state, params_.gravity);
+    out.gravity = GravitySample{potential, out.kinetic_energy + 0.5 * spin_energy + potential};
+  }
+  out.walls = walls_.sample(dt);
   restart_interval(t, collisions);
   return out;
 }
@@ -139,6 +210,7 @@ void GlobalDiagnostics<D>::save(StateArchive& archive, const std::string& prefix
   archive.put_scalar(prefix + "impulse_xy_sum", impulse_xy_sum_);
   archive.put_scalar(prefix + "interval_start", interval_start_);
   archive.put_integer(prefix + "interval_collisions", interval_collisions_);
+  if (params_.has_walls()) walls_.save(archive, prefix);
 }
 
 template <int D>
@@ -147,6 +219,7 @@ void GlobalDiagnostics<D>::restore(const StateArchive& archive, const std::strin
   impulse_xy_sum_ = archive.scalar(prefix + "impulse_xy_sum");
   interval_start_ = archive.scalar(prefix + "interval_start");
   interval_collisions_ = archive.integer(prefix + "interval_collisions");
+  if (params_.has_walls()) walls_.restore(archive, prefix);
 }
 
 template class GlobalDiagnostics<2>;

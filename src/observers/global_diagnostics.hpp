@@ -4,10 +4,16 @@
 // temperature, flatness κ (1.8), two asymmetry measures, kinetic and collisional pressures
 // (half traces of 1.4 and 1.6), the collision rate, and the scalars that classify the flow states
 // of Chapter 4 (analysis/flow_classification.hpp).  Collisional quantities are accumulated from
-// every collision record over the sampling interval.
+// every collision record over the sampling interval.  Runs with rough grains, gravity or walls
+// (issue 15) add columns: the rotational temperature, the potential and total energy, and what each
+// wall took and gave (observers/wall_stress.hpp); runs without them have exactly the old columns.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/field_grid.hpp"
@@ -16,8 +22,23 @@
 #include "engine/observer.hpp"
 #include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
+#include "observers/wall_stress.hpp"
 
 namespace granule {
+
+// Rough grains: T_rot = ⟨I|ω|²⟩/d_rot (I = q m σ²/4; d_rot = 1 for disks, 3 for spheres), and its
+// ratio to the translational temperature_global (both per degree of freedom: 1 at equipartition).
+struct RotationSample {
+  double rotational_temperature = 0.0;
+  double rotational_temperature_ratio = 0.0;
+};
+
+// Gravity g: the potential energy per particle −⟨m g·r⟩ (zero at the origin of the box) and the
+// total energy per particle, kinetic (lab frame) + rotational ½⟨I|ω|²⟩ + potential.
+struct GravitySample {
+  double potential_energy = 0.0;
+  double total_energy = 0.0;
+};
 
 struct DiagnosticsSample {
   double t = 0.0;
@@ -36,6 +57,9 @@ struct DiagnosticsSample {
   double shear_stress_kinetic = 0.0;      // xy component of (1.4), whole box
   double collision_rate = 0.0;        // Δc / Δt over the interval
   FlowClassification flow;            // density contrast, densest band, V_x(y) deviation, largest cluster
+  std::optional<RotationSample> rotation;  // rough grains only
+  std::optional<GravitySample> gravity;    // with gravity only
+  std::array<std::optional<WallFaceSample>, 6> walls;  // the faces with a wall (2·axis + side)
 };
 
 // The columns of the time series, in their order (timeseries.csv, checkpoints).
@@ -57,7 +81,24 @@ void for_each_column(Sample& s, Visit&& visit) {
   visit("shear_stress_collisional", s.shear_stress_collisional);
   visit("collision_rate", s.collision_rate);
   for_each_flow_measure(s.flow, visit);
+  if (s.rotation) {
+    visit("rotational_temperature", s.rotation->rotational_temperature);
+    visit("rotational_temperature_ratio", s.rotation->rotational_temperature_ratio);
+  }
+  if (s.gravity) {
+    visit("potential_energy", s.gravity->potential_energy);
+    visit("total_energy", s.gravity->total_energy);
+  }
+  for (int face = 0; face < 6; ++face) {
+    if (s.walls[static_cast<std::size_t>(face)]) for_each_wall_column(face, *s.walls[static_cast<std::size_t>(face)], visit);
+  }
 }
+
+// The column layout of a run with `params` (its optional groups present, values 0).
+DiagnosticsSample diagnostics_layout(const SystemParams& params);
+// The layout whose columns are the names of a file's header, in any order of groups the writer
+// uses; std::nullopt when the names are not the columns of any layout of this version.
+std::optional<DiagnosticsSample> diagnostics_layout_of(const std::vector<std::string>& names);
 
 // In 3D the Chapter 4 flow measures (2D pictures of bands and clusters) are NaN.
 template <int D>
@@ -70,6 +111,9 @@ class GlobalDiagnostics final : public EventObserver<D> {
       : GlobalDiagnostics(params, FieldGrid{cells_x, cells_y, params.length_x, params.length_y}) {}
 
   void on_collision(const CollisionRecord<D>& record) override;
+  void on_wall_collision(const WallCollisionRecord<D>& record) override;
+  // An empty sample with this run's columns (for readers of checkpoints).
+  DiagnosticsSample layout() const { return diagnostics_layout(params_); }
   // Measure the configuration `state` at time t (collisions since production started) and
   // close the current interval.  `shear_velocity` and `shear_offset` are the image velocity U and
   // offset Δ at time t (they change with time under a shear protocol).
@@ -89,9 +133,10 @@ class GlobalDiagnostics final : public EventObserver<D> {
   ShearFrame frame_;
   FieldGrid grid_;  // coarse-graining cells of T̄ and κ
   double impulse_sum_ = 0.0;     // Σ J σ_ij/σ over the interval (Σ J when monodisperse)
-  double impulse_xy_sum_ = 0.0;  // Σ J σ_ij/σ k_x k_y
+  double impulse_xy_sum_ = 0.0;  // Σ σ_ij/σ k_y P_x, P = J k̂ + P_t (J k_x k_y for smooth grains)
   double interval_start_ = 0.0;
   std::int64_t interval_collisions_ = 0;
+  WallStress<D> walls_;
 };
 
 }  // namespace granule

@@ -53,6 +53,15 @@ std::vector<Rgb> disk_colors(const ConfigurationScene& scene, const PictureOptio
       for (std::size_t i = 0; i < p.size(); ++i) colors[i] = sequential_color(high > 0.0 ? speed[i] / high : 0.0);
       break;
     }
+    case DiskColoring::kSpin: {
+      // Centred on 0, ± the 99th percentile of |ω_z|: one fast spinner does not wash out the picture.
+      std::vector<double> magnitude(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) magnitude[i] = std::abs(p.wz[i]);
+      high = quantile(magnitude, 0.99);
+      low = -high;
+      for (std::size_t i = 0; i < p.size(); ++i) colors[i] = diverging_color(high > 0.0 ? p.wz[i] / high : 0.0);
+      break;
+    }
     case DiskColoring::kField: {
       const std::vector<double>& values = *cell_field_by_name(fields, options.field);
       const auto [min, max] = std::minmax_element(values.begin(), values.end());
@@ -144,9 +153,33 @@ void draw_legend(cairo_t* cr, const PictureOptions& options, int width, double l
                      sequential_color);
       break;
     }
+    case DiskColoring::kSpin: {
+      const double bar_width = 3.0 * size, bar_height = 0.3 * size;
+      draw_color_bar(cr, width - bar_width - 0.6 * size, 1.0 * size, bar_width, bar_height, low, high, "spin ω_z",
+                     [](double u) { return diverging_color(2.0 * u - 1.0); });
+      break;
+    }
     case DiskColoring::kNone:
       break;
   }
+}
+
+// The walls as black lines on the faces (2 px at least, so that they show beside touching disks).
+void draw_walls(cairo_t* cr, const ConfigurationScene& scene, const PixelMap& map, double line_width) {
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  cairo_set_line_width(cr, line_width);
+  const double lx = scene.frame.length_x, ly = scene.frame.length_y;
+  for (int side = 0; side < 2; ++side) {
+    if (scene.walls[0]) {
+      cairo_move_to(cr, map.px(side * lx), map.py(0.0));
+      cairo_line_to(cr, map.px(side * lx), map.py(ly));
+    }
+    if (scene.walls[1]) {
+      cairo_move_to(cr, map.px(0.0), map.py(side * ly));
+      cairo_line_to(cr, map.px(lx), map.py(side * ly));
+    }
+  }
+  cairo_stroke(cr);
 }
 
 }  // namespace
@@ -155,6 +188,7 @@ std::optional<DiskColoring> parse_disk_coloring(std::string_view name) {
   if (name == "direction") return DiskColoring::kDirection;
   if (name == "speed") return DiskColoring::kSpeed;
   if (name == "field") return DiskColoring::kField;
+  if (name == "spin") return DiskColoring::kSpin;
   if (name == "none") return DiskColoring::kNone;
   return std::nullopt;
 }
@@ -191,6 +225,9 @@ RasterImage render_configuration(const ConfigurationScene& scene, const PictureO
       std::find(cell_field_names().begin(), cell_field_names().end(), options.field)) {
     throw std::invalid_argument("unknown cell field '" + options.field + "'");
   }
+  if (options.coloring == DiskColoring::kSpin && !scene.particles.rough()) {
+    throw std::invalid_argument("spin colours need rough grains (this configuration has no spins)");
+  }
   const ShearFrame& frame = scene.frame;
   const int width = options.width_px;
   const int height = std::max(1, static_cast<int>(std::lround(width * frame.length_y / frame.length_x)));
@@ -219,6 +256,7 @@ RasterImage render_configuration(const ConfigurationScene& scene, const PictureO
     });
     cairo_fill(cr);
   }
+  if (scene.walls[0] || scene.walls[1]) draw_walls(cr, scene, map, std::max(2.0, width / 400.0));
   if (options.arrows) draw_arrows(cr, fields, map, std::max(1.0, width / 800.0));
   if (options.legend) draw_legend(cr, options, width, low, high);
   if (!options.caption.empty()) {

@@ -1,10 +1,12 @@
 // Pictures of a particle configuration (thesis Figs 2.2, 2.3, 3.4, 3.10): every disk drawn to scale
 // in the box (y up), coloured by the direction of its velocity (the hue wheel of Fig 1.1's inset),
-// by its speed or by a coarse-grained cell field, with the coarse-grained velocity field V(r) of
+// by its speed, by its spin ω_z (rough grains, thesis Fig C.4) or by a coarse-grained cell field, with the coarse-grained velocity field V(r) of
 // §1.4.3 drawn as arrows from the cell centres.  Disks crossing the box edges are drawn with their
-// periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system.
+// periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls
+// (issue 15, Fig C.5) are drawn as lines along the faces they stand on.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,9 +20,9 @@
 
 namespace granule::render {
 
-enum class DiskColoring { kDirection, kSpeed, kField, kNone };
+enum class DiskColoring { kDirection, kSpeed, kField, kSpin, kNone };
 
-// "direction", "speed", "field", "none".
+// "direction", "speed", "field", "spin", "none".
 std::optional<DiskColoring> parse_disk_coloring(std::string_view name);
 
 // The cell fields a picture can colour by ("density", "temperature", ...); nullptr if unknown.
@@ -32,6 +34,7 @@ struct ConfigurationScene {
   double diameter = 0.0;           // σ
   ShearFrame frame;                // box and Lees–Edwards shear velocity U
   double shear_offset = 0.0;       // Lees–Edwards image offset Δ ∈ [0, L_x)
+  std::array<bool, 2> walls{};     // flat walls at both ends of x, of y (SystemParams::walls)
 };
 
 struct PictureOptions {
@@ -55,7 +58,8 @@ struct PictureOptions {
 // (32 × 32 for the thesis's N = 40000, as in Figs 2.2–2.3).
 FieldGrid automatic_picture_grid(std::int64_t particles, double length_x, double length_y);
 
-// Throws std::invalid_argument for an unknown field name or a width outside [16, 20000].
+// Throws std::invalid_argument for an unknown field name, a width outside [16, 20000], or spin
+// colours for smooth grains.
 RasterImage render_configuration(const ConfigurationScene& scene, const PictureOptions& options);
 
 }  // namespace granule::render
