@@ -64,7 +64,7 @@ int analyze_fields(const FieldsOptions& o) {
   }
   const ShearFrame frame{s.length_x, s.length_y, s.shear_velocity};
   FieldsWriter writer(o.out, grid, FieldsMetadata{s, head.metadata.boundary, o.subtract_shear, o.snapshots, kVersion}, false);
-  CellMoments running(grid);
+  CellMoments running(grid, spin_inertia(s));
   double t_start = 0.0, c_start = 0.0;
   for (std::int64_t k = first; k <= last; ++k) {
     const SnapshotRead snapshot = read_snapshot(o.snapshots, k);
@@ -73,7 +73,7 @@ int analyze_fields(const FieldsOptions& o) {
       t_start = f.clock.time;
       c_start = f.collisions_per_particle;
     }
-    CellMoments instant(grid);
+    CellMoments instant(grid, spin_inertia(s));
     instant.add(f.particles, frame, o.subtract_shear);
     running.add(f.particles, frame, o.subtract_shear);
     FieldsFrame out;

@@ -1,7 +1,9 @@
 // The benchmark workloads: in 2D (issue 3) elastic disks at ν = 0.05 and 0.5, free cooling at
 // e = 0.9 and Lees–Edwards shear at e = 0.8, N = 10^5 unless --particles says otherwise; in 3D
 // (issue 14) elastic spheres at φ = 0.30 and 0.05, free cooling at e = 0.9 and Lees–Edwards shear
-// at e = 0.8 (φ = 0.05), N = 108000 unless --particles-3d says otherwise.
+// at e = 0.8 (φ = 0.05), N = 108000 unless --particles-3d says otherwise; and in both (issue 15)
+// rough free cooling (e = 0.9, β = 0.5), an elastic gas in gravity between a floor and a ceiling,
+// and a rough gas sheared by walls moving at ∓U/2 (e = e_w = 0.9, β = β_w = 0.5), at ν = 0.05.
 #include "app/bench_command.hpp"
 
 #include <fmt/format.h>
@@ -27,11 +29,15 @@ namespace granule::app {
 
 namespace {
 
+// What a workload adds to smooth grains in a periodic or Lees–Edwards box.
+enum class Surfaces { kNone, kRough, kWallsGravity, kRoughWallShear };
+
 struct Workload {
   const char* name;
   double area_fraction;  // ν: area fraction in 2D, volume fraction in 3D
   double restitution;
   bool lees_edwards;
+  Surfaces surfaces = Surfaces::kNone;
 };
 
 struct BenchOptions {
@@ -63,7 +69,22 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
   const auto n = static_cast<double>(particles);
   p.diameter = dimension == 2 ? std::sqrt(4.0 * w.area_fraction / (M_PI * n)) : std::cbrt(6.0 * w.area_fraction / (M_PI * n));
   p.restitution = 1.0;
-  if (w.lees_edwards) {
+  const bool rough = w.surfaces == Surfaces::kRough || w.surfaces == Surfaces::kRoughWallShear;
+  if (rough) {
+    p.roughness.rough = true;
+    p.roughness.tangential_restitution = 0.5;
+    p.roughness.inertia_factor = dimension == 2 ? 0.5 : 0.4;
+  }
+  if (w.surfaces == Surfaces::kWallsGravity || w.surfaces == Surfaces::kRoughWallShear) {
+    p.walls[1] = true;
+    for (int side = 0; side < 2; ++side) {
+      WallParams& wall = p.wall[static_cast<std::size_t>(2 + side)];
+      wall.restitution = rough ? 0.9 : 1.0;
+      wall.tangential_restitution = rough ? 0.5 : -1.0;
+    }
+  }
+  if (w.surfaces == Surfaces::kWallsGravity) p.gravity[1] = -2.0;  // barometric height T/g = L/2
+  if (w.lees_edwards || w.surfaces == Surfaces::kRoughWallShear) {
     double rate = 0.0;
     if (dimension == 2) {
       rate = std::sqrt(1.0 / theory::steady_shear_temperature_tan_fit(w.restitution, 1.0, p.diameter, w.area_fraction));
@@ -72,7 +93,12 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
       const double viscosity = 5.0 / (16.0 * p.diameter * p.diameter) * std::sqrt(1.0 / M_PI);
       rate = std::sqrt(n * omega * (1.0 - w.restitution * w.restitution) * 0.5 / viscosity);
     }
-    p.shear_velocity = rate * p.length_y;
+    if (w.lees_edwards) {
+      p.shear_velocity = rate * p.length_y;
+    } else {  // the same velocity difference, carried by the y walls
+      p.wall[2].velocity[0] = -0.5 * rate * p.length_y;
+      p.wall[3].velocity[0] = 0.5 * rate * p.length_y;
+    }
   }
   return p;
 }
@@ -89,21 +115,23 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   request.dimension = D;
   request.length_z = p.length_z;
   const CellGridChoice grid = choose_cell_grid(request);
-  const InitialStateResult init = make_initial_state(p, temperature, o.seed, Placement::kAuto);
+  const InitialStateResult init = make_initial_state(elastic_prerun(p), temperature, o.seed, Placement::kAuto);
   if (!grid.grid || !init.error.empty()) {
     fmt::print("{:<28} cannot be set up: {}{}\n", w.name, grid.error, init.error);
     return;
   }
-  Simulation<D> sim(p, *grid.grid, init.state);
+  Simulation<D> sim(elastic_prerun(p), *grid.grid, init.state);
   // Melt lattices and forget the initial transient: 2 elastic collisions per particle, untimed.
   sim.run(std::numeric_limits<double>::infinity(), 2 * p.particles);
-  sim.start_production(w.restitution);
+  SystemParams production = p;
+  production.restitution = w.restitution;
+  sim.start_production(production);
   const auto target = std::llround(o.collisions_per_particle * static_cast<double>(p.particles));
   const auto at_least = [&](Measurements m) { return static_cast<int>(measure) >= static_cast<int>(m); };
   const FieldGrid cells = D == 3 ? default_field_grid_3d(p.length_x, p.length_y, p.length_z, p.particles)
                                  : default_field_grid(p.length_x, p.length_y, p.particles);
   GlobalDiagnostics<D> diagnostics(p, cells);
-  CollisionalStressField<D> stress(cells, p.diameter);
+  CollisionalStressField<D> stress(cells, p.diameter, p.roughness.rough);
   LocalDensity density(cells);
   ImpactParameterStatistics<D> impacts(p.diameter, 50, p.particles, {}, &density);
   FreePathStatistics<D> paths(p.particles, FreePathSettings{}, &density);
@@ -158,12 +186,18 @@ void add_bench_command(CLI::App& root) {
         {"elastic, nu=0.5", 0.5, 1.0, false},
         {"free cooling e=0.9, nu=0.05", 0.05, 0.9, false},
         {"Lees-Edwards e=0.8, nu=0.05", 0.05, 0.8, true},
+        {"rough cooling e=0.9 b=0.5", 0.05, 0.9, false, Surfaces::kRough},
+        {"walls+gravity elastic", 0.05, 1.0, false, Surfaces::kWallsGravity},
+        {"rough wall shear e=0.9", 0.05, 0.9, false, Surfaces::kRoughWallShear},
     };
     const Workload workloads_3d[] = {
         {"3D elastic, phi=0.30", 0.30, 1.0, false},
         {"3D elastic, phi=0.05", 0.05, 1.0, false},
         {"3D free cooling e=0.9, 0.05", 0.05, 0.9, false},
         {"3D Lees-Edwards e=0.8, 0.05", 0.05, 0.8, true},
+        {"3D rough cooling e=0.9 b=0.5", 0.05, 0.9, false, Surfaces::kRough},
+        {"3D walls+gravity elastic", 0.05, 1.0, false, Surfaces::kWallsGravity},
+        {"3D rough wall shear e=0.9", 0.05, 0.9, false, Surfaces::kRoughWallShear},
     };
     if (options->dimensions != "3") {
       for (const Workload& w : workloads) run_workload<2>(w, *options);

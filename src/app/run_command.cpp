@@ -97,6 +97,16 @@ ParticleState state_from_run(const RunConfig& config) {
                                      theirs.length_y, theirs.length_z, ours.dimension, ours.particles, ours.diameter,
                                      ours.length_x, ours.length_y, ours.length_z)};
   }
+  // A frame is a state of its own boundaries and grains: its centres keep a radius from its walls
+  // only, and only rough frames carry spins.
+  if (theirs.walls != ours.walls || theirs.roughness.rough != ours.roughness.rough) {
+    throw CommandFailure{kExitBadInput,
+                         fmt::format("initial.from = \"{}\" is a run with {} and {} grains; this run has {} and {} grains: "
+                                     "boundary.kind / boundary.wall_axes and system.tangential_restitution must agree",
+                                     from.directory, theirs.has_walls() ? "walls" : "no walls",
+                                     theirs.roughness.rough ? "rough" : "smooth", ours.has_walls() ? "walls" : "no walls",
+                                     ours.roughness.rough ? "rough" : "smooth")};
+  }
   // The sizes and masses are those this configuration draws from its seed: the frame's must agree.
   const ParticleSizes sizes = particle_sizes(config);
   if (sizes.diameter != read.frame.particles.diameter || sizes.mass != read.frame.particles.mass) {
@@ -120,7 +130,8 @@ std::unique_ptr<RunSession<D>> new_session(const RunConfig& config, const CellGr
     state = state_from_run(config);
   } else {
     InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
-                                                    config.placement, clock.held_shear_velocity, particle_sizes(config));
+                                                    config.placement, clock.held_shear_velocity, particle_sizes(config),
+                                                    {config.initial_shear_profile, config.initial_rotational_temperature});
     if (!initial.error.empty()) {
       throw CommandFailure{kExitBadInput, fmt::format("{} (system.{} = {:.4g})", initial.error,
                                                       config.system.dimension == 2 ? "area_fraction" : "packing_fraction",

@@ -34,9 +34,9 @@ void RunMeasurements<D>::set_up(Simulation<D>& sim) {
     fields_schedule_ = own ? Schedule{config_.fields.every_collisions_per_particle, config_.fields.every_time}
                            : Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
     fields_schedule_.start(s.particles);
-    collisional_ = std::make_unique<CollisionalStressField<D>>(grid_, monodisperse_diameter());
+    collisional_ = std::make_unique<CollisionalStressField<D>>(grid_, monodisperse_diameter(), config_.system.roughness.rough);
     sim.add_observer(collisional_.get());
-    interval_moments_ = std::make_unique<CellMoments>(grid_);
+    interval_moments_ = std::make_unique<CellMoments>(grid_, spin_inertia(config_.system));
   }
   const CollisionStatisticsConfig& k = config_.collisions;
   if (k.impact_parameters || k.free_paths) {
@@ -65,7 +65,7 @@ std::optional<double> RunMeasurements<D>::monodisperse_diameter() const {
 
 template <int D>
 FieldsMetadata RunMeasurements<D>::fields_metadata() const {
-  return {config_.system, config_.lees_edwards ? "lees-edwards" : "periodic", config_.fields.subtract_shear_profile, "run",
+  return {config_.system, boundary_kind_name(config_), config_.fields.subtract_shear_profile, "run",
           kVersion};
 }
 
@@ -201,7 +201,7 @@ void RunMeasurements<D>::write_fields_frame(const Simulation<D>& sim) {
   const bool subtract = config_.fields.subtract_shear_profile;
   const ParticleState state = sim.state();
   frame_.shear_velocity = sim.image_velocity();
-  CellMoments instant(grid_);
+  CellMoments instant(grid_, spin_inertia(config_.system));
   instant.add(state, frame_, subtract);
   // The interval average includes the configuration that closes it (once).
   if (last_sample_collisions_ != sim.collisions()) interval_moments_->add(state, frame_, subtract);
@@ -221,7 +221,7 @@ void RunMeasurements<D>::write_fields_frame(const Simulation<D>& sim) {
   }
   fields_writer_->append(frame);
   last_fields_collisions_ = sim.collisions();
-  interval_moments_ = std::make_unique<CellMoments>(grid_);
+  interval_moments_ = std::make_unique<CellMoments>(grid_, spin_inertia(config_.system));
   if (collisional_) collisional_->restart(sim.time());
   interval_start_t_ = frame.t;
   interval_start_c_ = frame.c;
@@ -237,7 +237,7 @@ nlohmann::json RunMeasurements<D>::finish(const Simulation<D>& sim) {
   if (!density_) return j;
   const SystemParams& s = config_.system;
   write_collision_statistics<D>(out_dir_,
-                                {s, config_.lees_edwards ? "lees-edwards" : "periodic", kVersion, statistics_from_t_,
+                                {s, boundary_kind_name(config_), kVersion, statistics_from_t_,
                                  statistics_from_c_, sim.time(), sim.collisions_per_particle(), grid_,
                                  !config_.diameters.monodisperse()},
                                 impacts_.get(), paths_.get());

@@ -91,7 +91,7 @@ void RunSession<D>::start_production() {
   SnapshotMetadata metadata;
   metadata.system = system;
   metadata.packing_fraction = config_.packing_fraction;
-  metadata.boundary = config_.lees_edwards ? "lees-edwards" : "periodic";
+  metadata.boundary = boundary_kind_name(config_);
   metadata.seed = config_.seed;
   metadata.version = kVersion;
   const ParticleState now = sim_->state();
@@ -114,9 +114,10 @@ void RunSession<D>::restore_production(const StateArchive& archive) {
   diagnostics_->restore(archive, "diagnostics/");
   sim_->add_observer(diagnostics_.get());
   const std::size_t rows = archive.get<double>("run/samples/t").size();
-  samples_.assign(rows, {});
-  DiagnosticsSample layout;
-  for_each_column(layout, [&](const char* name, double&) {
+  // The columns of this run (the optional groups of spin, gravity and walls as configured).
+  const DiagnosticsSample layout = diagnostics_->layout();
+  samples_.assign(rows, layout);
+  for_each_column(layout, [&](const char* name, const double&) {
     const auto& column = archive.get_sized<double>(std::string("run/samples/") + name, rows);
     for (std::size_t k = 0; k < rows; ++k) {
       for_each_column(samples_[k], [&](const char* field, double& value) {
@@ -148,7 +149,7 @@ void RunSession<D>::save(StateArchive& archive) const {
   if (!in_production()) return;
   diagnostics_->save(archive, "diagnostics/");
   std::map<std::string, std::vector<double>> columns;
-  const DiagnosticsSample layout;
+  const DiagnosticsSample layout = diagnostics_->layout();
   for_each_column(layout, [&](const char* name, const double&) { columns[name].reserve(samples_.size()); });
   for (const DiagnosticsSample& sample : samples_) {
     for_each_column(sample, [&](const char* name, const double& value) { columns[name].push_back(value); });

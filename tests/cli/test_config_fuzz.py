@@ -47,8 +47,9 @@ BASES = {
 
 KEYS = {
     "": ["seed"],
-    "system": ["particles", "area_fraction", "diameter", "box", "restitution", "tc_duration"],
-    "boundary": ["kind", "shear_velocity"],
+    "system": ["particles", "area_fraction", "diameter", "box", "restitution", "tc_duration", "gravity",
+               "tangential_restitution", "inertia_factor", "friction"],
+    "boundary": ["kind", "shear_velocity", "wall_axes", "wall_restitution", "wall_tangential_restitution"],
     "initial": ["temperature", "equilibrate", "placement"],
     "run": ["until_collisions_per_particle"],
     "output": ["every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",

@@ -82,7 +82,9 @@ max_length = 0.5
 const std::vector<std::string> kKeys = {
     "seed", "system.particles", "system.area_fraction", "system.packing_fraction", "system.diameter",
     "system.diameters", "system.masses", "system.box", "system.restitution",
-    "system.tc_duration", "boundary.kind", "boundary.shear_velocity", "initial.temperature", "initial.equilibrate",
+    "system.tc_duration", "system.gravity", "system.tangential_restitution", "system.inertia_factor",
+    "system.friction", "boundary.kind", "boundary.shear_velocity", "boundary.wall_axes",
+    "boundary.wall_restitution", "boundary.wall_tangential_restitution", "initial.rotational_temperature", "initial.temperature", "initial.equilibrate",
     "initial.placement", "run.until_collisions_per_particle", "run.until_time", "output.every_collisions_per_particle",
     "output.every_time", "output.snapshot_every_collisions_per_particle", "output.snapshot_every_time",
     "engine.particles_per_cell", "engine.cells", "diagnostics.cells", "fields.enabled", "fields.cells",

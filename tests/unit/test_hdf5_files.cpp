@@ -215,7 +215,7 @@ FieldsFrame fields_frame(const FieldGrid& grid, int label) {
     for_each_field(*fields, [&](const char*, std::vector<double>& v) { v.assign(grid.cells(), label + 0.5); });
   }
   f.collisional = CollisionalStress{std::vector<double>(grid.cells(), label), std::vector<double>(grid.cells(), 0.0),
-                                    std::vector<double>(grid.cells(), label), std::vector<double>(grid.cells(), 1.0), 1.0, {}, {}, {}, {}, {}, {}};
+                                    std::vector<double>(grid.cells(), label), std::vector<double>(grid.cells(), 1.0), 1.0, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   f.heat_flux_collisional = HeatFlux{std::vector<double>(grid.cells(), -label), std::vector<double>(grid.cells(), 2.0 * label), {}};
   return f;
 }
