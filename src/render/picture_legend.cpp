@@ -55,8 +55,8 @@ void draw_color_bar(cairo_t* cr, double x, double y, double width, double height
   cairo_move_to(cr, x, y - 0.3 * font);
   cairo_show_text(cr, label);
   char low_text[32], high_text[32];
-  std::snprintf(low_text, sizeof low_text, "%.3g", low);
-  std::snprintf(high_text, sizeof high_text, "%.3g", high);
+  std::snprintf(low_text, sizeof low_text, "%.4g", low);
+  std::snprintf(high_text, sizeof high_text, "%.4g", high);
   cairo_move_to(cr, x, y + height + font);
   cairo_show_text(cr, low_text);
   cairo_text_extents_t extents;
