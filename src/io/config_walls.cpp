@@ -80,7 +80,7 @@ void resolve_walls(const ConfigReader& in, bool walls, RunConfig& c) {
 }
 
 void set_wall_shear(SystemParams& s, double shear_velocity) {
-  s.wall[2].velocity[0] = -0.5 * shear_velocity;
+  s.wall[2].velocity[0] = 0.0 - 0.5 * shear_velocity;  // +0, not −0, for walls at rest (printed, echoed)
   s.wall[3].velocity[0] = 0.5 * shear_velocity;
 }
 

@@ -5,6 +5,9 @@
 //    / Carnahan–Starling corrections) away from the floor's layering;
 //  • the contact theorem: an elastic gas between flat walls pushes on them with its bulk pressure
 //    n T Z(φ) (Henderson in 2D, Carnahan–Starling in 3D), n measured in the middle of the box;
+//  • a wall-driven shear flow in its steady state carries one flux of x momentum from wall to wall:
+//    the walls take equal and opposite shear stresses, and the mean profile is antisymmetric about
+//    the middle;
 //  • homogeneous cooling of rough grains: T_tr and T_rot against the Maxwellian kinetic theory of
 //    Huthmann & Zippelius (1997) and Luding et al. (1998) (theory/rough_cooling.hpp), in 2D and 3D,
 //    per collision (which removes the unknown contact value and collision frequency).
@@ -14,6 +17,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "observers/global_diagnostics.hpp"
 #include "theory/hard_spheres.hpp"
 #include "theory/hydrostatics.hpp"
 #include "theory/rough_cooling.hpp"
@@ -171,6 +175,55 @@ void check_wall_pressure() {
 TEST(SurfacesPhysics, DisksPushOnAFlatWallWithTheirBulkPressure) { check_wall_pressure<2>(); }
 TEST(SurfacesPhysics, SpheresPushOnAFlatWallWithTheirBulkPressure) { check_wall_pressure<3>(); }
 
+// Inelastic smooth disks between rough inelastic walls moving at ∓U/2 (ν = 0.1, ẽ = e_w = 0.9,
+// β_w = 0.5), over 200 collisions per disk after 100 of transient.
+TEST(SurfacesPhysics, AWallDrivenShearFlowCarriesOneMomentumFluxFromWallToWall) {
+  const std::array<int, 2> per_axis{50, 40};
+  const double sigma = std::sqrt(4.0 * 0.1 / (M_PI * 2000.0));
+  SystemParams p = surfaces_system<2>(per_axis, {1.0, 1.0}, sigma, 0.9);
+  add_walls(p, 1, 0.9, 0.5);
+  const double u = 10.0;
+  p.wall[2].velocity[0] = -0.5 * u;
+  p.wall[3].velocity[0] = 0.5 * u;
+  Simulation<2> sim(p, surfaces_grid<2>(p), lattice_gas<2>(p, per_axis, 1.0, 31));
+  sim.run(kInf, 100 * p.particles);
+  GlobalDiagnostics<2> diagnostics(p, FieldGrid{8, 8, 1.0, 1.0});
+  sim.add_observer(&diagnostics);
+  diagnostics.restart_interval(sim.time(), sim.collisions());
+  constexpr int kBins = 10;
+  constexpr int kChunks = 200;
+  std::array<double, kBins> momentum{}, count{};
+  double kinetic = 0.0;  // Σ m v_x v_y / V averaged over the states (eq 1.4; ⟨V_x(y) v_y⟩ → 0)
+  for (int chunk = 1; chunk <= kChunks; ++chunk) {
+    sim.run(kInf, (100 + chunk) * p.particles);
+    const ParticleState s = sim.state();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      kinetic += s.vx[i] * s.vy[i] / (p.length_x * p.length_y) / kChunks;
+      const auto bin = static_cast<std::size_t>(std::min(kBins - 1, static_cast<int>(s.y[i] * kBins)));
+      momentum[bin] += s.vx[i];
+      count[bin] += 1.0;
+    }
+  }
+  const DiagnosticsSample sample = diagnostics.sample(sim.state(), sim.time(), sim.collisions(), 0.0, 0.0);
+  ASSERT_TRUE(sample.walls[2] && sample.walls[3]);
+  const double bottom = sample.walls[2]->shear_stress, top = sample.walls[3]->shear_stress;
+  // The time series' kinetic column is one state's; the time average is taken here.
+  const double bulk = kinetic + sample.shear_stress_collisional;
+  std::printf("wall shear stresses: bottom %.5g, top %.5g; bulk kinetic %.5g + collisional %.5g = %.5g\n", bottom, top,
+              kinetic, sample.shear_stress_collisional, bulk);
+  EXPECT_GT(bottom, 0.0);  // the lower wall pulls the gas towards −x: it takes +x momentum
+  EXPECT_NEAR(-top / bottom, 1.0, 0.03);
+  // Not asserted: the grains' own kinetic + collisional stress comes out at 0.71 of the walls' (an
+  // open question, docs/walls_gravity_spin.md).
+  std::printf("bulk / wall shear stress: %.4f\n", -bulk / bottom);
+  for (int k = 0; k < kBins / 2; ++k) {
+    const double lower = momentum[static_cast<std::size_t>(k)] / count[static_cast<std::size_t>(k)];
+    const double upper = momentum[static_cast<std::size_t>(kBins - 1 - k)] / count[static_cast<std::size_t>(kBins - 1 - k)];
+    std::printf("  V_x in band %d: %.4f, mirrored %.4f\n", k, lower, upper);
+    EXPECT_NEAR(lower, -upper, 0.03 * 0.5 * u) << "band " << k;
+  }
+}
+
 // Rough homogeneous cooling, per collision: T_tr(c) and T_rot(c) from equipartition at c = 0.
 template <int D>
 void check_rough_cooling(double e, double beta) {
@@ -213,6 +266,51 @@ void check_rough_cooling(double e, double beta) {
     EXPECT_NEAR(measured.rotational / expected.rotational, 1.0, tolerance) << "c = " << c;
   }
 }
+
+// The cooling state: started with T_rot/T_tr at the kinetic theory's fixed point R (the positive
+// root of its quadratic), the gas keeps it while it cools.
+template <int D>
+void check_cooling_state(double e, double beta) {
+  std::array<int, D> per_axis;
+  per_axis.fill(D == 2 ? 50 : 14);
+  const double sigma = D == 2 ? 0.004 : 0.0216;
+  SystemParams p = surfaces_system<D>(per_axis, box_of<D>(1.0, 1.0), sigma, 1.0);
+  const double q = D == 2 ? 0.5 : 0.4;
+  make_rough(p, -1.0, q);
+  const theory::RoughGrains grains{e, beta, q};
+  const double ratio = theory::rough_temperature_ratio(D, grains);
+  ParticleState initial = lattice_gas<D>(p, per_axis, 1.0, 41);
+  for (int k = 0; k < initial.spin_components(); ++k) {
+    for (double& w : initial.spin(k)) w *= std::sqrt(ratio);
+  }
+  Simulation<D> sim(p, surfaces_grid<D>(p), initial);
+  sim.run(kInf, 5 * p.particles);
+  SystemParams production = p;
+  production.restitution = e;
+  production.roughness.tangential_restitution = beta;
+  sim.start_production(production);
+  const double inertia = q * 0.25 * sigma * sigma;
+  // The ratio of one state fluctuates by ~√(2/N) per temperature (3 % here): averaged over 36
+  // states from c = 0.5 to 4.
+  double mean_ratio = 0.0;
+  const int samples = 36;
+  for (int k = 0; k < samples; ++k) {
+    const double c = 0.5 + 0.1 * k;
+    sim.run(kInf, std::llround(c * static_cast<double>(p.particles)));
+    const ParticleState s = sim.state();
+    double rot = 0.0;
+    for (int m = 0; m < s.spin_components(); ++m) {
+      for (double w : s.spin(m)) rot += inertia * w * w;
+    }
+    mean_ratio += rot / (s.spin_components() * static_cast<double>(s.size())) / temperature_of(s) / samples;
+  }
+  std::printf("[%dD e=%.2f β=%+.2f] mean T_rot/T_tr over c = 0.5 … 4: %.4f, cooling state of the theory %.4f\n", D, e,
+              beta, mean_ratio, ratio);
+  EXPECT_NEAR(mean_ratio / ratio, 1.0, 0.03);
+}
+
+TEST(SurfacesPhysics, RoughDisksKeepTheCoolingStateRatio) { check_cooling_state<2>(0.9, 0.0); }
+TEST(SurfacesPhysics, RoughSpheresKeepTheCoolingStateRatio) { check_cooling_state<3>(0.8, -0.4); }
 
 TEST(SurfacesPhysics, RoughDisksCoolAsKineticTheorySays) {
   check_rough_cooling<2>(0.9, -0.4);
