@@ -8,12 +8,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "analysis/collisional_stress.hpp"
 #include "analysis/free_paths.hpp"
@@ -48,7 +51,14 @@ struct BenchOptions {
   std::optional<double> particles_per_cell;  // default: that of runs, per dimension
   std::uint64_t seed = 7;
   bool observers = false;
+  std::vector<std::string> only;  // run only the workloads whose names contain one of these
 };
+
+bool selected(const Workload& w, const BenchOptions& o) {
+  return o.only.empty() || std::any_of(o.only.begin(), o.only.end(), [&](const std::string& part) {
+           return std::string_view(w.name).find(part) != std::string_view::npos;
+         });
+}
 
 // The measurements a run makes by default, added one at a time (observer_cost below).
 enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePaths };
@@ -108,6 +118,7 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
 // refresh) is done as in `granule run`.
 template <int D>
 void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
+  if (!selected(w, o)) return;
   const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d);
   constexpr double temperature = 1.0;
   CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards,
@@ -175,6 +186,8 @@ void add_bench_command(CLI::App& root) {
                       "Target cell occupancy of the engine grid (default: that of runs, 1 in 2D, 0.6 in 3D)")
       ->check(CLI::Range(0.1, 20.0));
   command->add_option("--seed", options->seed, "Seed of the initial states")->default_val(7);
+  command->add_option("--only", options->only,
+                      "Run only the workloads whose names contain one of these texts (e.g. --only \"elastic, nu\")");
   command->add_flag("--observers", options->observers,
                     "Also time the free-cooling and Lees–Edwards workloads with the default measurements of a run "
                     "added one at a time (their cost)");
