@@ -97,9 +97,7 @@ void Simulation<D>::allocate_arrays() {
   kind_.assign(n, EventKind::kNone);
   partner_.assign(n, -1);
   partner_count_.assign(n, 0);
-  // Kept only where U changes over and over (a time-dependent protocol): +8 B per particle and one
-  // store per prediction that a constant drive does not pay.
-  if (!protocol_.constant()) collision_time_.assign(n, kInf);
+  collision_time_.assign(n, kInf);
 }
 
 template <int D>
@@ -347,24 +345,25 @@ typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, co
 }
 
 template <int D>
-typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i) const {
-  return has_gravity_ ? next_event_in<true>(i) : next_event_in<false>(i);
+typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i, const Reach& reach, Candidate known) const {
+  return has_gravity_ ? next_event_in<true>(i, reach, known) : next_event_in<false>(i, reach, known);
 }
 
 template <int D>
 template <bool kGravity>
-typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i) const {
+typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, const Reach& reach,
+                                                                Candidate known) const {
   const Vector ri = position_now(i);
   const Vector vi = velocity_now(i);
   const Crossing crossing = next_crossing(i, ri, vi);
 
-  // Collisions with the particles of the 3^D block of cells.  Under a uniform gravity the relative
+  // Collisions with the particles of the cells within reach.  Under a uniform gravity the relative
   // motion of two grains is still a straight line: only their present states need it.
-  std::int32_t partner = -1;
-  double best = kInf;
+  std::int32_t partner = known.partner;
+  double best = known.delay;
   const bool polydisperse = !diameter_.empty();
   const double sigma = params_.diameter;
-  for_each_neighbour(i, [&](std::int32_t j, const Vector& shift, double shift_vx) {
+  for_each_neighbour(i, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
     const double dt_j = t_now_ - t_[at(j)];
     Vector rel_position;
     Vector rel_velocity;
@@ -389,12 +388,34 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i) 
 
 template <int D>
 void Simulation<D>::predict(std::int32_t i) {
-  const Prediction next = next_event(i);
+  store(i, next_event(i));
+}
+
+template <int D>
+void Simulation<D>::store(std::int32_t i, const Prediction& next) {
   kind_[at(i)] = next.kind();
   partner_[at(i)] = next.partner;
   partner_count_[at(i)] = next.partner >= 0 ? count_[at(next.partner)] : 0;
-  if (!collision_time_.empty()) collision_time_[at(i)] = t_now_ + next.collision_delay;
+  collision_time_[at(i)] = t_now_ + next.collision_delay;
   heap_.update(i, t_now_ + next.delay());
+}
+
+// Why the layer ahead suffices: every pair (i, j) of neighbours is covered, meaning that the event
+// slot of i or of j is no later than their collision.  A whole scan covers i's pairs; a collision
+// ends the coverage of its two particles' pairs only, and they are scanned whole again; a crossing
+// leaves every trajectory as it was, so a pair j that stays adjacent is covered as it was before —
+// by j's slot, or by i's candidate, which is kept here (while it is valid, that is while its
+// partner has not collided: otherwise i's slot, no later than the candidate, would have lost the
+// pairs the candidate stood for, and the whole block is scanned again).  The pairs of the layer
+// ahead are new to i and are scanned.
+template <int D>
+void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int direction) {
+  if (!candidate_valid(i)) {
+    predict(i);
+    return;
+  }
+  const Candidate kept{partner_[at(i)], collision_time_[at(i)] - t_now_};
+  store(i, next_event(i, Reach::layer_ahead(axis, direction), kept));
 }
 
 template <int D>
@@ -424,7 +445,7 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   lists_.remove(i, old_cell);
   lists_.insert(i, new_cell);
   cell_[at(i)] = new_cell;
-  predict(i);
+  predict_after_crossing(i, axis, direction);
 }
 
 template <int D>
@@ -442,7 +463,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   v2[0] += shift.velocity_x;
   // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
   // round-off; a pair that is no longer approaching must not collide.
-  if (dot(r, v2 - v1) >= 0.0) {
+  if (!approaching(r, v2 - v1)) {
     predict(i);
     return false;
   }

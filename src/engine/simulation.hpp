@@ -150,6 +150,9 @@ class Simulation {
   // the boundary change, collisions inside the box do not (only they are kept, re-predicted).
   void change_image_velocity(double velocity);
   void repredict_after_shear_change();
+  // Whether particle i's valid collision candidate is a pair that meets through a y image (its
+  // time then depends on U).
+  bool meets_through_y_image(std::int32_t i) const;
   std::int32_t cell_of(const Vector& position) const;
   // The cell coordinates (column, row, layer) of a cell id.
   std::array<int, D> cell_coordinates(std::int32_t cell) const;
@@ -188,18 +191,53 @@ class Simulation {
   };
   struct Prediction {
     Crossing crossing;
-    std::int32_t partner;    // the earliest collision in the 3^D block (−1: none)
+    std::int32_t partner;    // the earliest collision found (−1: none)
     double collision_delay;  // +inf when none
     EventKind kind() const {
       return collision_delay < crossing.delay ? EventKind::kCollision : crossing.kind;
     }
     double delay() const { return std::min(collision_delay, crossing.delay); }
   };
-  // Flattened: the neighbour loop, its visitor and the pair test inline into one loop (the hot path).
-  Prediction next_event(std::int32_t i) const;
-  // next_event's neighbour scan, compiled without and with gravity (the plain case pays nothing).
+  // The cell offsets (each −1..1 per axis) around a particle's cell that a scan visits: the whole
+  // 3^D block, or, after a crossing, only the layer of cells that has just become adjacent.
+  struct Reach {
+    std::array<int, D> lowest;
+    std::array<int, D> highest;
+    static Reach block() {
+      Reach reach;
+      reach.lowest.fill(-1);
+      reach.highest.fill(1);
+      return reach;
+    }
+    static Reach layer_ahead(int axis, int direction) {
+      Reach reach = block();
+      reach.lowest[static_cast<std::size_t>(axis)] = reach.highest[static_cast<std::size_t>(axis)] = direction;
+      return reach;
+    }
+  };
+  // The best collision known before a scan: a kept candidate (partner −1: none).
+  struct Candidate {
+    std::int32_t partner = -1;
+    double delay = std::numeric_limits<double>::infinity();
+  };
+  // The earliest event of particle i from a scan of the whole block.
+  Prediction next_event(std::int32_t i) const { return next_event(i, Reach::block(), Candidate{}); }
+  // The earliest of `known` and the collisions with the particles within `reach`, and the crossing;
+  // compiled without and with gravity (the plain case pays nothing).  Flattened: the neighbour
+  // loop, its visitor and the pair test inline into one loop (the hot path).
+  Prediction next_event(std::int32_t i, const Reach& reach, Candidate known) const;
   template <bool kGravity>
-  [[gnu::flatten]] Prediction next_event_in(std::int32_t i) const;
+  [[gnu::flatten]] Prediction next_event_in(std::int32_t i, const Reach& reach, Candidate known) const;
+  void store(std::int32_t i, const Prediction& next);
+  // After a crossing (Isobe 1999): the collision candidate found before stays the best among the
+  // cells that stay adjacent (ARCHITECTURE.md, "One event per particle"), so only the layer of
+  // cells ahead is scanned; a stale candidate asks for a whole scan.
+  void predict_after_crossing(std::int32_t i, int axis, int direction);
+  // Whether particle i's kept candidate is still a valid collision: its partner has not collided since.
+  bool candidate_valid(std::int32_t i) const {
+    const std::int32_t k = partner_[static_cast<std::size_t>(i)];
+    return k < 0 || count_[static_cast<std::size_t>(k)] == partner_count_[static_cast<std::size_t>(i)];
+  }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
   Crossing next_crossing(std::int32_t i, const Vector& position, const Vector& velocity) const;
@@ -216,7 +254,12 @@ class Simulation {
   // The sheared frame is plainly periodic, so images follow from the cell offsets alone; a wall
   // axis has no images (the block stops at the wall).
   template <typename Visit>
-  void for_each_neighbour(std::int32_t i, Visit&& visit) const;
+  void for_each_neighbour(std::int32_t i, Visit&& visit) const {
+    for_each_neighbour(i, Reach::block(), visit);
+  }
+  // The same over the offsets within `reach`.
+  template <typename Visit>
+  void for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const;
   // The image of a partner at lab offset `offset` from a particle in contact with it.
   struct PartnerImage {
     int image_y;  // −1, 0, +1: which vertical image
@@ -251,7 +294,8 @@ class Simulation {
   std::vector<EventKind> kind_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint32_t> partner_count_;
-  // The earliest collision found, pending or not (+inf: none); time-dependent protocols only.
+  // The time of the collision candidate (partner_), pending or not (+inf: none): kept through
+  // crossings, and through changes of U where the pair meets inside the box.
   std::vector<double> collision_time_;
 
   CellLists lists_;
@@ -287,13 +331,14 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 
 template <int D>
 template <typename Visit>
-void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
+void Simulation<D>::for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
   const std::array<int, D> cell = cell_coordinates(cell_[static_cast<std::size_t>(i)]);
   const double s = strain();
   // Layers (z, 3D only) outermost, then rows (y), then columns (x): the order decides which of
   // two partners at equal times is taken, so it is the 2D engine's order.
-  constexpr int kLayerReach = D == 3 ? 1 : 0;
-  for (int dl = -kLayerReach; dl <= kLayerReach; ++dl) {
+  const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
+  const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
+  for (int dl = lowest_layer; dl <= highest_layer; ++dl) {
     int layer = 0;
     double shift_z = 0.0;
     if constexpr (D == 3) {
@@ -305,7 +350,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
         shift_z = image_across(2, direction, s).position[2];
       }
     }
-    for (int dr = -1; dr <= 1; ++dr) {
+    for (int dr = reach.lowest[1]; dr <= reach.highest[1]; ++dr) {
       int r = cell[1] + dr;
       int iy = 0;
       if ((r < 0 || r >= grid_.ny) && params_.walls[1]) continue;
@@ -317,7 +362,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, Visit&& visit) const {
         iy = 1;
       }
       const ImageShift row_shift = frame_.image_shift(0, iy, s);
-      for (int dc = -1; dc <= 1; ++dc) {
+      for (int dc = reach.lowest[0]; dc <= reach.highest[0]; ++dc) {
         int c = cell[0] + dc;
         Vector shift;
         shift[0] = row_shift.position.x;

@@ -205,15 +205,13 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     } else if constexpr (std::is_same_v<Value, std::int64_t>) {
       value = archive.integer(prefix + name);
     } else {
-      // Per-particle arrays; the TC history exists only with the TC model, the kept collision
-      // times only under a time-dependent shear protocol (both saved empty otherwise), sizes and
-      // masses only in polydisperse runs (not saved otherwise).
+      // Per-particle arrays; the TC history exists only with the TC model (saved empty otherwise),
+      // sizes and masses only in polydisperse runs (not saved otherwise).
       const std::string_view key(name);
       const bool per_particle_sizes = key == "particle_diameter" || key == "particle_mass";
       if (per_particle_sizes && !polydisperse) return;
       if (key.substr(0, 5) == "spin_" && !params.roughness.rough) return;
-      const bool absent = (key == "last_collision" && params.tc_duration <= 0.0) ||
-                          (key == "collision_time" && protocol_.constant());
+      const bool absent = key == "last_collision" && params.tc_duration <= 0.0;
       value = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
     }
   });

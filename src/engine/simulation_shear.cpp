@@ -50,14 +50,10 @@ void Simulation<D>::change_image_velocity(double velocity) {
 template <int D>
 void Simulation<D>::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
-  if (collision_time_.empty()) {  // a constant protocol changes U once at most (a static start)
-    for (std::int32_t i = 0; i < n; ++i) predict(i);
-    return;
-  }
   for (std::int32_t i = 0; i < n; ++i) {
     const int row = grid_.row_of(cell_[at(i)]);
-    if (row == 0 || row == grid_.ny - 1) {
-      predict(i);  // its 3^D block reaches across the boundary, where the images' velocity changed
+    if (row == 0 || row == grid_.ny - 1 || meets_through_y_image(i)) {
+      predict(i);  // its block reaches across the boundary, where the images' velocity changed
       continue;
     }
     // The earliest collision inside the box is unchanged; the crossing in ξ is not.
@@ -67,6 +63,18 @@ void Simulation<D>::repredict_after_shear_change() {
     kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;
     heap_.update(i, collision_first ? collision_time_[at(i)] : t_crossing);
   }
+}
+
+template <int D>
+bool Simulation<D>::meets_through_y_image(std::int32_t i) const {
+  // A candidate kept through crossings may be a pair that meets across the y boundary although
+  // both now sit in inner rows (one of them crossed the boundary since): at contact their lab
+  // ordinates, extrapolated from now, are then about L_y apart instead of σ.
+  const std::int32_t k = partner_[at(i)];
+  if (k < 0 || !candidate_valid(i) || collision_time_[at(i)] == kInf) return false;
+  const double delay = collision_time_[at(i)] - t_now_;
+  return std::abs(position_after(k, delay + t_now_ - t_[at(k)])[1] - position_after(i, delay + t_now_ - t_[at(i)])[1]) >
+         0.5 * params_.length_y;
 }
 
 template <int D>
@@ -119,6 +127,7 @@ template void Simulation<2>::schedule_realignment();
 template void Simulation<2>::enter_shear_segment(const ShearSegment&);
 template void Simulation<2>::change_image_velocity(double);
 template void Simulation<2>::repredict_after_shear_change();
+template bool Simulation<2>::meets_through_y_image(std::int32_t) const;
 template void Simulation<2>::realign_sheared_grid();
 template Simulation<2>::PartnerImage Simulation<2>::nearest_image(const Vec<2>&) const;
 template void Simulation<2>::enter_from_image(std::int32_t, int);
@@ -127,6 +136,7 @@ template void Simulation<3>::schedule_realignment();
 template void Simulation<3>::enter_shear_segment(const ShearSegment&);
 template void Simulation<3>::change_image_velocity(double);
 template void Simulation<3>::repredict_after_shear_change();
+template bool Simulation<3>::meets_through_y_image(std::int32_t) const;
 template void Simulation<3>::realign_sheared_grid();
 template Simulation<3>::PartnerImage Simulation<3>::nearest_image(const Vec<3>&) const;
 template void Simulation<3>::enter_from_image(std::int32_t, int);

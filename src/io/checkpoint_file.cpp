@@ -1,5 +1,6 @@
 #include "io/checkpoint_file.hpp"
 
+#include <fmt/format.h>
 #include <hdf5.h>
 
 #include <stdexcept>
@@ -14,7 +15,10 @@ namespace {
 using namespace h5;
 
 constexpr const char* kFormat = "granule-checkpoint";
-constexpr int kFormatVersion = 1;
+// 2: the engine keeps each particle's collision candidate (time and partner) through crossings, in
+// every run (version 1 kept the time only under time-dependent protocols): a version-1 checkpoint
+// cannot continue its run bit for bit and is refused.
+constexpr int kFormatVersion = 2;
 
 // The HDF5 file type of each element type an archive can hold (little-endian, fixed size).
 template <typename T>
@@ -98,6 +102,12 @@ StateArchive read_checkpoint(const std::string& path) {
   const hid_t file = handle.get();
   StateArchive archive;
   if (read_string_attribute(file, "format") != kFormat) throw std::runtime_error(path + " is not a Granule checkpoint");
+  if (const int version = read_attribute<int>(file, "format_version", H5T_NATIVE_INT); version != kFormatVersion) {
+    throw std::runtime_error(fmt::format("{} is a checkpoint of format version {}, written by another version of Granule "
+                                         "({}); this one continues runs from version {} only: continue it with the "
+                                         "Granule that wrote it, or resume from a snapshot frame (--from-frame)",
+                                         path, version, read_string_attribute(file, "granule_version"), kFormatVersion));
+  }
   std::vector<std::string> names;
   check(H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, collect_dataset, &names), file, "list the datasets of", path.c_str());
   for (const std::string& name : names) read_dataset(file, name, archive);

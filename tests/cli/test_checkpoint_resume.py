@@ -103,6 +103,19 @@ for name in ("snapshots.h5", "fields.h5", "collisions.h5"):
     same, differing = same_h5(longer / name, reference / name)
     check(same, f"{name} of the extended run equals the longer run: {differing}")
 
+# A checkpoint of another format version (an older engine's bookkeeping) is refused with what to do,
+# and nothing is written.
+older = WORK / "older"
+result = granule("run", "--out", older, *SYSTEM, "--set", "run.until_collisions_per_particle=5")
+check(result.returncode == 0, f"short run: {result.stderr}")
+with h5py.File(older / "checkpoint.h5", "r+") as f:
+    f.attrs["format_version"] = np.int32(1)
+before = {p.name: p.read_bytes() for p in older.iterdir() if p.is_file()}
+result = granule("run", "--resume", older, "--set", "run.until_collisions_per_particle=10")
+check(result.returncode != 0 and "format version 1" in result.stderr and "--from-frame" in result.stderr,
+      f"an older checkpoint is refused with advice: exit {result.returncode}: {result.stderr[-400:]}")
+check(before == {p.name: p.read_bytes() for p in older.iterdir() if p.is_file()}, "the refused resume wrote nothing")
+
 # A resumed run keeps its physics; a directory in use is not overwritten silently.
 result = granule("run", "--resume", reference, "--set", "system.restitution=0.5")
 check(result.returncode == 2 and "system.restitution" in result.stderr, f"physics change refused: {result.stderr}")

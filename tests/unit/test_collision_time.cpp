@@ -38,6 +38,16 @@ TEST(CollisionTime, OverlapByRoundOff) {
   EXPECT_EQ(collision_time<2>({1.0 - 1e-13, 0.0}, {1.0, 0.1}, 1.0), kNever);
 }
 
+TEST(CollisionTime, GrazingContactIsTangential) {
+  // At contact with a normal velocity 10⁻¹⁷ of the speed: no impulse could separate the pair
+  // (it would be lost in round-off), so it must not collide at all, or it collides forever at
+  // one instant.  A normal velocity of 10⁻⁹ of the speed is resolved and collides now.
+  EXPECT_EQ(collision_time<2>({1.0, 0.0}, {-1e-17, 1.0}, 1.0), kNever);
+  EXPECT_FALSE(approaching<2>({1.0, 0.0}, {-1e-17, 1.0}));
+  EXPECT_EQ(collision_time<2>({1.0, 0.0}, {-1e-9, 1.0}, 1.0), 0.0);
+  EXPECT_TRUE(approaching<2>({1.0, 0.0}, {-1e-9, 1.0}));
+}
+
 TEST(CollisionTime, RecedingAndParallel) {
   EXPECT_EQ(collision_time<2>({3.0, 0.0}, {1.0, 0.0}, 1.0), kNever);
   EXPECT_EQ(collision_time<2>({3.0, 0.0}, {0.0, 1.0}, 1.0), kNever);
