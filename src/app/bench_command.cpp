@@ -48,7 +48,7 @@ struct BenchOptions {
   std::int64_t particles_3d = 108000;
   std::string dimensions = "both";
   double collisions_per_particle = 20.0;
-  std::optional<double> particles_per_cell;  // default: that of runs, per dimension
+  std::optional<double> particles_per_cell;  // default: that of runs
   std::uint64_t seed = 7;
   bool observers = false;
   std::vector<std::string> only;  // run only the workloads whose names contain one of these
@@ -122,7 +122,7 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
   const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d);
   constexpr double temperature = 1.0;
   CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards,
-                          o.particles_per_cell.value_or(default_particles_per_cell(D)), std::nullopt};
+                          o.particles_per_cell.value_or(kDefaultParticlesPerCell), std::nullopt};
   request.dimension = D;
   request.length_z = p.length_z;
   const CellGridChoice grid = choose_cell_grid(request);
@@ -183,7 +183,7 @@ void add_bench_command(CLI::App& root) {
       ->default_val(20.0)
       ->check(CLI::Range(0.1, 1e6));
   command->add_option("--particles-per-cell", options->particles_per_cell,
-                      "Target cell occupancy of the engine grid (default: that of runs, 1 in 2D, 0.6 in 3D)")
+                      "Target cell occupancy of the engine grid (default: that of runs, 0.6)")
       ->check(CLI::Range(0.1, 20.0));
   command->add_option("--seed", options->seed, "Seed of the initial states")->default_val(7);
   command->add_option("--only", options->only,

@@ -35,11 +35,13 @@ struct CellGrid {
   double size(int axis) const { return axis == 0 ? width : (axis == 1 ? height : depth); }
 };
 
-// The default target occupancy of the engine's cells: 1 for disks (thesis A.2: 1–2 is optimal);
-// 0.6 for spheres, where a 27-cell stencil makes smaller cells pay: measured with granule bench
-// at N = 108000 (alternating, 2 rounds), 0.5 instead of 1 ran 1.2–1.3× faster at φ = 0.05 and
-// 0.30; 0.6 keeps the engine within 100 bytes per sphere (a cell head is 4 B / occupancy).
-constexpr double default_particles_per_cell(int dimension) { return dimension == 3 ? 0.6 : 1.0; }
+// The default target occupancy of the engine's cells, 0.6 for disks and spheres (thesis A.2 found
+// 1–2 optimal for disks with a whole 3×3 scan at every crossing; scanning only the layer ahead
+// makes crossings cheap, and smaller cells pay): measured with granule bench at N = 10⁵ disks
+// (alternating runs), 0.6 instead of 1 ran level at ν = 0.05 and 1.14× faster at ν = 0.5 (cells
+// then as small as allowed, σ); at N = 108000 spheres, 0.5 instead of 1 ran 1.2–1.3× faster at
+// φ = 0.05 and 0.30.  A cell head costs 4 B / occupancy per particle.
+constexpr double kDefaultParticlesPerCell = 0.6;
 
 struct CellGridRequest {
   double length_x = 1.0;

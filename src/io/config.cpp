@@ -137,7 +137,7 @@ RunConfig resolve(const toml::table& root) {
   c.particles_per_cell = in.number("engine.particles_per_cell", NumberRange{min_per_cell, 20.0},
                                    min_per_cell > 0.1 ? fmt::format(" for N = {} (at most 2^31 − 1 engine cells)", n)
                                                       : std::string{})
-                             .value_or(std::max(min_per_cell, default_particles_per_cell(s.dimension)));
+                             .value_or(std::max(min_per_cell, kDefaultParticlesPerCell));
   // Grids given by hand have two counts: 3D runs choose theirs (engine, diagnostics, fields).
   if (s.dimension == 3) {
     for (const char* key : {"engine.cells", "diagnostics.cells", "fields.cells"}) {
