@@ -76,36 +76,15 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
   return {grid, {}};
 }
 
-void CellLists::reset(std::int64_t cells, std::int64_t particles) {
-  head_.assign(static_cast<std::size_t>(cells), kEnd);
-  next_.assign(static_cast<std::size_t>(particles), kEnd);
-}
-
-void CellLists::insert(std::int32_t particle, std::int32_t cell) {
-  auto& head = head_[static_cast<std::size_t>(cell)];
-  next_[static_cast<std::size_t>(particle)] = head;
-  head = particle;
-}
-
-void CellLists::remove(std::int32_t particle, std::int32_t cell) {
-  // Cells hold one or two particles on average (thesis A.2), so a walk beats a back-link.
-  std::int32_t* link = &head_[static_cast<std::size_t>(cell)];
-  while (*link != particle) link = &next_[static_cast<std::size_t>(*link)];
-  *link = next_[static_cast<std::size_t>(particle)];
-}
-
-void CellLists::save(StateArchive& archive, const std::string& prefix) const {
-  archive.put(prefix + "head", head_);
-  archive.put(prefix + "next", next_);
-}
+void CellLists::save(StateArchive& archive, const std::string& prefix) const { archive.put(prefix + "head", head_); }
 
 void CellLists::restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells,
-                        std::int64_t particles) {
+                        const std::vector<std::int32_t>& links) {
   head_ = archive.get<std::int32_t>(prefix + "head");
-  next_ = archive.get<std::int32_t>(prefix + "next");
+  const auto particles = static_cast<std::int64_t>(links.size());
   const auto valid = [&](std::int32_t id) { return id == kEnd || (id >= 0 && id < particles); };
-  if (head_.size() != static_cast<std::size_t>(cells) || next_.size() != static_cast<std::size_t>(particles) ||
-      !std::all_of(head_.begin(), head_.end(), valid) || !std::all_of(next_.begin(), next_.end(), valid)) {
+  if (head_.size() != static_cast<std::size_t>(cells) || !std::all_of(head_.begin(), head_.end(), valid) ||
+      !std::all_of(links.begin(), links.end(), valid)) {
     throw std::runtime_error("checkpoint cell lists do not fit a grid of " + std::to_string(cells) + " cells and " +
                              std::to_string(particles) + " particles");
   }

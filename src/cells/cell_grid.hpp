@@ -65,25 +65,44 @@ struct CellGridChoice {
 };
 CellGridChoice choose_cell_grid(const CellGridRequest& request);
 
-// Singly linked particle lists per cell: a head per cell, a next per particle (plain ids).
+// Singly linked particle lists per cell: a head per cell here, and the link of each particle in
+// its record (`records[i].next`, engine/particle_record.hpp), so that walking a list reads the
+// records a collision test needs anyway.  Plain ids.
 class CellLists {
  public:
-  void reset(std::int64_t cells, std::int64_t particles);
-  void insert(std::int32_t particle, std::int32_t cell);
-  void remove(std::int32_t particle, std::int32_t cell);
-  std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
-  std::int32_t next(std::int32_t particle) const { return next_[static_cast<std::size_t>(particle)]; }
-  std::size_t bytes() const { return (head_.capacity() + next_.capacity()) * sizeof(std::int32_t); }
-  // The order within each list decides the order of candidate partners, hence ties: a
-  // checkpoint keeps it exactly.
-  void save(StateArchive& archive, const std::string& prefix) const;
-  void restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells, std::int64_t particles);
-
   static constexpr std::int32_t kEnd = -1;
 
+  void reset(std::int64_t cells) { head_.assign(static_cast<std::size_t>(cells), kEnd); }
+  template <typename Records>
+  void insert(Records& records, std::int32_t particle, std::int32_t cell) {
+    auto& head = head_[static_cast<std::size_t>(cell)];
+    records[static_cast<std::size_t>(particle)].next = head;
+    head = particle;
+  }
+  template <typename Records>
+  void remove(Records& records, std::int32_t particle, std::int32_t cell) {
+    // Cells hold about one particle (thesis A.2), so a walk beats a back-link.
+    std::int32_t* link = &head_[static_cast<std::size_t>(cell)];
+    while (*link != particle) link = &records[static_cast<std::size_t>(*link)].next;
+    *link = records[static_cast<std::size_t>(particle)].next;
+  }
+  std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
+  std::size_t bytes() const { return head_.capacity() * sizeof(std::int32_t); }
+  // The order within each list decides the order of candidate partners, hence ties: a
+  // checkpoint keeps it exactly (the links with the records, the heads here).
+  void save(StateArchive& archive, const std::string& prefix) const;
+  // Restores the heads and checks them and the records' links against the grid and N.
+  template <typename Records>
+  void restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells, const Records& records) {
+    std::vector<std::int32_t> links(records.size());
+    for (std::size_t i = 0; i < links.size(); ++i) links[i] = records[i].next;
+    restore(archive, prefix, cells, links);
+  }
+
  private:
+  void restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells, const std::vector<std::int32_t>& links);
+
   std::vector<std::int32_t> head_;
-  std::vector<std::int32_t> next_;
 };
 
 }  // namespace granule

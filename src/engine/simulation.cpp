@@ -23,25 +23,26 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 
 template <int D>
 Vec<D> Simulation<D>::position_after(std::int32_t i, double dt) const {
+  const ParticleRecord<D>& p = particles_[at(i)];
   Vector r;
   if (has_gravity_) {
-    for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + (velocity_[a][at(i)] + 0.5 * gravity_[a] * dt) * dt;
+    for (int a = 0; a < D; ++a) r[a] = p.r[a] + (p.v[a] + 0.5 * gravity_[a] * dt) * dt;
   } else {
-    for (int a = 0; a < D; ++a) r[a] = position_[a][at(i)] + velocity_[a][at(i)] * dt;
+    for (int a = 0; a < D; ++a) r[a] = p.r[a] + p.v[a] * dt;
   }
   return r;
 }
 
 template <int D>
 Vec<D> Simulation<D>::position_now(std::int32_t i) const {
-  return position_after(i, t_now_ - t_[at(i)]);
+  return position_after(i, t_now_ - particles_[at(i)].t);
 }
 
 template <int D>
 Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
-  Vector v;
-  for (int a = 0; a < D; ++a) v[a] = velocity_[a][at(i)];
-  if (has_gravity_) v = v + (t_now_ - t_[at(i)]) * gravity_;
+  const ParticleRecord<D>& p = particles_[at(i)];
+  Vector v = p.v;
+  if (has_gravity_) v = v + (t_now_ - p.t) * gravity_;
   return v;
 }
 
@@ -92,7 +93,6 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
 template <int D>
 void Simulation<D>::allocate_arrays() {
   const auto n = static_cast<std::size_t>(params_.particles);
-  count_.assign(n, 0);
   cell_.assign(n, 0);
   kind_.assign(n, EventKind::kNone);
   partner_.assign(n, -1);
@@ -103,27 +103,27 @@ void Simulation<D>::allocate_arrays() {
 template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  std::size_t total = bytes(t_) + bytes(diameter_) + bytes(mass_) + bytes(count_) + bytes(cell_) +
+  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(cell_) +
                       bytes(last_collision_) + bytes(kind_) + bytes(partner_) + bytes(partner_count_) +
                       bytes(collision_time_) + lists_.bytes() + heap_.bytes();
-  for (int a = 0; a < D; ++a) total += bytes(position_[a]) + bytes(velocity_[a]);
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
 
 template <int D>
 void Simulation<D>::advance(std::int32_t i) {
-  const double dt = t_now_ - t_[at(i)];
+  ParticleRecord<D>& p = particles_[at(i)];
+  const double dt = t_now_ - p.t;
   if (has_gravity_) {
     const Vector r = position_after(i, dt);
     for (int a = 0; a < D; ++a) {
-      position_[a][at(i)] = r[a];
-      velocity_[a][at(i)] += gravity_[a] * dt;
+      p.r[a] = r[a];
+      p.v[a] += gravity_[a] * dt;
     }
   } else {
-    for (int a = 0; a < D; ++a) position_[a][at(i)] += velocity_[a][at(i)] * dt;
+    for (int a = 0; a < D; ++a) p.r[a] += p.v[a] * dt;
   }
-  t_[at(i)] = t_now_;
+  p.t = t_now_;
 }
 
 template <int D>
@@ -139,7 +139,7 @@ std::int32_t Simulation<D>::cell_of(const Vector& r) const {
 template <int D>
 void Simulation<D>::rebase() {
   const double delta = t_now_;
-  for (auto& t : t_) t -= delta;
+  for (auto& p : particles_) p.t -= delta;
   for (auto& t : last_collision_) t -= delta;
   for (auto& t : collision_time_) t -= delta;
   heap_.shift_times(delta);
@@ -167,25 +167,23 @@ void Simulation<D>::rebuild() {
   rebase();
   const double lx = params_.length_x;
   const double s = strain();
-  auto& x = position_[0];
-  auto& y = position_[1];
   // Wall axes are never wrapped: a grain's centre stays a radius inside them (check_invariants).
-  for (std::int32_t i = 0; i < n; ++i) {
+  for (auto& p : particles_) {
     if (params_.walls[1]) {
-      if (!params_.walls[0]) wrap_periodic(x[at(i)], lx);
+      if (!params_.walls[0]) wrap_periodic(p.r[0], lx);
     } else {
-      frame_.wrap_into_box(x[at(i)], y[at(i)], velocity_[0][at(i)], s);
+      frame_.wrap_into_box(p.r[0], p.r[1], p.v[0], s);
       // Then into [0, L_x) in the sheared abscissa, where the cell grid lives.
-      x[at(i)] -= lx * std::floor(frame_.sheared_x(x[at(i)], y[at(i)], s) / lx);
+      p.r[0] -= lx * std::floor(frame_.sheared_x(p.r[0], p.r[1], s) / lx);
     }
     if constexpr (D == 3) {
-      if (!params_.walls[2]) wrap_periodic(position_[2][at(i)], params_.length_z);
+      if (!params_.walls[2]) wrap_periodic(p.r[2], params_.length_z);
     }
   }
-  lists_.reset(grid_.cell_count(), params_.particles);
+  lists_.reset(grid_.cell_count());
   for (std::int32_t i = 0; i < n; ++i) {
     cell_[at(i)] = cell_of(position_now(i));
-    lists_.insert(i, cell_[at(i)]);
+    lists_.insert(particles_, i, cell_[at(i)]);
   }
   heap_.reset(n);
   for (std::int32_t i = 0; i < n; ++i) predict(i);
@@ -194,9 +192,14 @@ void Simulation<D>::rebuild() {
 template <int D>
 void Simulation<D>::load(const ParticleState& state) {
   if (state.dimension != D) throw std::invalid_argument("the initial state has another dimension than the engine");
-  for (int a = 0; a < D; ++a) {
-    position_[a] = state.position(a);
-    velocity_[a] = state.velocity(a);
+  particles_.assign(state.size(), ParticleRecord<D>{});
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    ParticleRecord<D>& p = particles_[i];
+    for (int a = 0; a < D; ++a) {
+      p.r[a] = state.position(a)[i];
+      p.v[a] = state.velocity(a)[i];
+    }
+    p.t = t_now_;
   }
   diameter_ = state.diameter;
   mass_ = state.mass;
@@ -204,7 +207,6 @@ void Simulation<D>::load(const ParticleState& state) {
     if (!state.rough()) throw std::invalid_argument("rough grains need angular velocities in the initial state");
     for (int k = 0; k < kSpinComponents; ++k) spin_[static_cast<std::size_t>(k)] = state.spin(k);
   }
-  t_.assign(state.size(), t_now_);
 }
 
 template <int D>
@@ -364,16 +366,17 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   const bool polydisperse = !diameter_.empty();
   const double sigma = params_.diameter;
   for_each_neighbour(i, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
-    const double dt_j = t_now_ - t_[at(j)];
+    const ParticleRecord<D>& pj = particles_[at(j)];
+    const double dt_j = t_now_ - pj.t;
     Vector rel_position;
     Vector rel_velocity;
     for (int a = 0; a < D; ++a) {
-      double vj = velocity_[a][at(j)];
+      double vj = pj.v[a];
       if constexpr (kGravity) {
-        rel_position[a] = position_[a][at(j)] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
+        rel_position[a] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
         vj += gravity_[a] * dt_j;
       } else {
-        rel_position[a] = position_[a][at(j)] + vj * dt_j + shift[a] - ri[a];
+        rel_position[a] = pj.r[a] + vj * dt_j + shift[a] - ri[a];
       }
       rel_velocity[a] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
     }
@@ -395,7 +398,7 @@ template <int D>
 void Simulation<D>::store(std::int32_t i, const Prediction& next) {
   kind_[at(i)] = next.kind();
   partner_[at(i)] = next.partner;
-  partner_count_[at(i)] = next.partner >= 0 ? count_[at(next.partner)] : 0;
+  partner_count_[at(i)] = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
   collision_time_[at(i)] = t_now_ + next.collision_delay;
   heap_.update(i, t_now_ + next.delay());
 }
@@ -433,7 +436,7 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
     if (axis == 1) {
       enter_from_image(i, -direction);  // the Lees–Edwards rule (thesis §1.4.2)
     } else {
-      position_[axis][at(i)] -= image_across(axis, direction, strain()).position[axis];
+      particles_[at(i)].r[axis] -= image_across(axis, direction, strain()).position[axis];
     }
   }
   std::int32_t new_cell = 0;
@@ -442,8 +445,8 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   } else {
     new_cell = grid_.index(cell[0], cell[1], cell[2]);
   }
-  lists_.remove(i, old_cell);
-  lists_.insert(i, new_cell);
+  lists_.remove(particles_, i, old_cell);
+  lists_.insert(particles_, i, new_cell);
   cell_[at(i)] = new_cell;
   predict_after_crossing(i, axis, direction);
 }
@@ -457,7 +460,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   const auto [iy, shift] = nearest_image(position_now(j) - ri);
 
   Vector r;
-  for (int a = 0; a < D; ++a) r[a] = position_[a][at(j)] + shift.position[a] - position_[a][at(i)];
+  for (int a = 0; a < D; ++a) r[a] = particles_[at(j)].r[a] + shift.position[a] - particles_[at(i)].r[a];
   const Vector v1 = velocity_now(i);
   Vector v2 = velocity_now(j);
   v2[0] += shift.velocity_x;
@@ -489,11 +492,11 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
   }
   for (int a = 0; a < D; ++a) {
-    velocity_[a][at(i)] = after.v1[a];
-    velocity_[a][at(j)] = a == 0 ? after.v2[a] - shift.velocity_x : after.v2[a];
+    particles_[at(i)].v[a] = after.v1[a];
+    particles_[at(j)].v[a] = a == 0 ? after.v2[a] - shift.velocity_x : after.v2[a];
   }
-  ++count_[at(i)];
-  ++count_[at(j)];
+  ++particles_[at(i)].count;
+  ++particles_[at(j)].count;
   ++collisions_;
 
   if (!observers_.empty()) {
@@ -579,7 +582,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     bool collided = false;
     bool hit_wall = false;
     if (kind == EventKind::kCollision) {
-      if (count_[at(j)] != partner_count_[at(i)]) {
+      if (particles_[at(j)].count != partner_count_[at(i)]) {
         predict(i);  // the partner has collided since: stale
       } else {
         collided = execute_collision(i, j);

@@ -22,6 +22,7 @@
 #include "cells/cell_grid.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
+#include "engine/particle_record.hpp"
 #include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
@@ -236,7 +237,7 @@ class Simulation {
   // Whether particle i's kept candidate is still a valid collision: its partner has not collided since.
   bool candidate_valid(std::int32_t i) const {
     const std::int32_t k = partner_[static_cast<std::size_t>(i)];
-    return k < 0 || count_[static_cast<std::size_t>(k)] == partner_count_[static_cast<std::size_t>(i)];
+    return k < 0 || particles_[static_cast<std::size_t>(k)].count == partner_count_[static_cast<std::size_t>(i)];
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
@@ -277,17 +278,16 @@ class Simulation {
   bool protocol_running_ = false;
   double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
-  // Particle arrays (struct of arrays, one array per component, plain ids).  Positions are valid
-  // at local time t_[i].
-  std::array<std::vector<double>, D> position_, velocity_;
-  std::vector<double> t_;
+  // Particles by plain id: the records a neighbour's collision test reads (position and velocity
+  // at local time t, cell-list link, collision counter), then arrays of what only a particle's
+  // own events read.
+  std::vector<ParticleRecord<D>> particles_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only
   // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
   // events); rough grains only.
   std::array<std::vector<double>, kSpinComponents> spin_;
   Vector gravity_;
   bool has_gravity_ = false;
-  std::vector<std::uint32_t> count_;  // collisions of each particle: invalidates stale events
   std::vector<std::int32_t> cell_;
   std::vector<double> last_collision_;  // TC model only
   // Pending event of each particle (its time lives in the heap).
@@ -375,7 +375,7 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, const Reach& reach, Visit
           shift[0] += image_across(0, direction, s).position[0];
         }
         const std::int32_t neighbour = grid_.index(c, r, layer);
-        for (std::int32_t j = lists_.first(neighbour); j != CellLists::kEnd; j = lists_.next(j)) {
+        for (std::int32_t j = lists_.first(neighbour); j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
           if (j != i) visit(j, shift, row_shift.velocity_x);
         }
       }

@@ -90,6 +90,23 @@ void check_surfaces_match(const StateArchive& archive, const std::string& prefix
   }
 }
 
+// The fields of the particle records a checkpoint holds, one array each (the names of the arrays
+// they were before the records), by name and an accessor.
+template <int D, typename Visit>
+void visit_record_fields(Visit&& visit) {
+  visit("x", [](auto& p) -> auto& { return p.r.x; });
+  visit("y", [](auto& p) -> auto& { return p.r.y; });
+  visit("vx", [](auto& p) -> auto& { return p.v.x; });
+  visit("vy", [](auto& p) -> auto& { return p.v.y; });
+  if constexpr (D == 3) {
+    visit("z", [](auto& p) -> auto& { return p.r.z; });
+    visit("vz", [](auto& p) -> auto& { return p.v.z; });
+  }
+  visit("local_time", [](auto& p) -> auto& { return p.t; });
+  visit("collision_count", [](auto& p) -> auto& { return p.count; });
+  visit("cell_list_next", [](auto& p) -> auto& { return p.next; });
+}
+
 bool optional_array(std::string_view name) {
   return name == "particle_diameter" || name == "particle_mass" || name.substr(0, 5) == "spin_";
 }
@@ -106,14 +123,6 @@ std::vector<T> array_of_size(const StateArchive& archive, const std::string& nam
 template <int D>
 template <typename Self, typename Visit>
 void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
-  visit("x", self.position_[0]);
-  visit("y", self.position_[1]);
-  visit("vx", self.velocity_[0]);
-  visit("vy", self.velocity_[1]);
-  if constexpr (D == 3) {
-    visit("z", self.position_[2]);
-    visit("vz", self.velocity_[2]);
-  }
   visit("particle_diameter", self.diameter_);
   visit("particle_mass", self.mass_);
   if constexpr (D == 3) {
@@ -121,8 +130,6 @@ void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
     visit("spin_y", self.spin_[1]);
   }
   visit("spin_z", self.spin_[kSpinComponents - 1]);
-  visit("local_time", self.t_);
-  visit("collision_count", self.count_);
   visit("cell", self.cell_);
   visit("last_collision", self.last_collision_);
   visit("event_partner", self.partner_);
@@ -174,6 +181,11 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
       archive.put(prefix + name, value);
     }
   });
+  visit_record_fields<D>([&](const char* name, auto field) {
+    std::vector<std::decay_t<decltype(field(particles_[0]))>> values(particles_.size());
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = field(particles_[i]);
+    archive.put(prefix + name, std::move(values));
+  });
   std::vector<std::uint8_t> kinds(kind_.size());
   for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<std::uint8_t>(kind_[i]);
   archive.put(prefix + "event_kind", std::move(kinds));
@@ -198,6 +210,11 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
   visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
   const auto n = static_cast<std::size_t>(params.particles);
+  particles_.assign(n, ParticleRecord<D>{});
+  visit_record_fields<D>([&](const char* name, auto field) {
+    const auto values = array_of_size<std::decay_t<decltype(field(particles_[0]))>>(archive, prefix + name, n);
+    for (std::size_t i = 0; i < n; ++i) field(particles_[i]) = values[i];
+  });
   visit_saved_state(*this, [&](const char* name, auto& value) {
     using Value = std::decay_t<decltype(value)>;
     if constexpr (std::is_same_v<Value, double>) {
@@ -232,7 +249,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       throw std::runtime_error("checkpoint has a disk with an invalid cell or event partner");
     }
   }
-  lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), params.particles);
+  lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), particles_);
   heap_.restore(archive, prefix + "heap_", static_cast<std::int32_t>(params.particles));
   collapse_detector_.restore(archive, prefix + "collapse_");
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.

@@ -38,7 +38,7 @@ void Simulation<D>::check_invariants() const {
   for (std::int64_t c = 0; c < grid_.cell_count(); ++c) {
     std::int64_t steps = 0;
     const auto cell = static_cast<std::int32_t>(c);
-    for (std::int32_t j = lists_.first(cell); j != CellLists::kEnd; j = lists_.next(j)) {
+    for (std::int32_t j = lists_.first(cell); j != CellLists::kEnd; j = particles_[at(j)].next) {
       if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || cell_[at(j)] != cell) {
         fail("cell list ", c, " is corrupt at particle ", j);
       }
@@ -49,8 +49,8 @@ void Simulation<D>::check_invariants() const {
   for (std::int32_t i = 0; i < n; ++i) {
     if (!seen[at(i)]) fail("particle ", i, " is in no cell list");
     const Vector r = position_now(i);
-    bool finite = t_now_ >= t_[at(i)];
-    for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(velocity_[a][at(i)]);
+    bool finite = t_now_ >= particles_[at(i)].t;
+    for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(particles_[at(i)].v[a]);
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", i, " has a non-finite state or a local time after the clock");
     for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
@@ -92,7 +92,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   const Vector r = position_now(i);
   if (kind == EventKind::kCollision) {
     const std::int32_t j = partner_[at(i)];
-    if (count_[at(j)] != partner_count_[at(i)]) return;  // stale: nothing to execute
+    if (particles_[at(j)].count != partner_count_[at(i)]) return;  // stale: nothing to execute
     const Vector offset = position_now(j) - r;
     const double distance = norm(offset + nearest_image(offset).shift.position);
     const double sigma = contact_distance(i, j);

@@ -94,9 +94,9 @@ void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
   const TangentialLaw law{wall.tangential_restitution, std::numeric_limits<double>::infinity()};
   const RoughImpulse<D> impulse = rough_impulse(grain, surface, k_hat, e, law);
   apply_rough_impulse(grain, surface, k_hat, impulse);
-  for (int a = 0; a < D; ++a) velocity_[a][at(i)] = grain.velocity[a];
+  particles_[at(i)].v = grain.velocity;
   if (params_.roughness.rough) set_spin(i, grain.spin);
-  ++count_[at(i)];  // its pending partners' predictions are stale
+  ++particles_[at(i)].count;  // its pending partners' predictions are stale
 
   if (!observers_.empty()) {
     WallCollisionRecord<D> record;

@@ -73,7 +73,8 @@ bool Simulation<D>::meets_through_y_image(std::int32_t i) const {
   const std::int32_t k = partner_[at(i)];
   if (k < 0 || !candidate_valid(i) || collision_time_[at(i)] == kInf) return false;
   const double delay = collision_time_[at(i)] - t_now_;
-  return std::abs(position_after(k, delay + t_now_ - t_[at(k)])[1] - position_after(i, delay + t_now_ - t_[at(i)])[1]) >
+  return std::abs(position_after(k, delay + t_now_ - particles_[at(k)].t)[1] -
+                  position_after(i, delay + t_now_ - particles_[at(i)].t)[1]) >
          0.5 * params_.length_y;
 }
 
@@ -111,12 +112,13 @@ typename Simulation<D>::PartnerImage Simulation<D>::nearest_image(const Vector& 
 template <int D>
 void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
   const ImageShift shift = frame_.image_shift(0, image_y, strain());
-  const double vx_before = velocity_[0][at(i)];
-  position_[0][at(i)] += shift.position.x;
-  position_[1][at(i)] += shift.position.y;
-  velocity_[0][at(i)] += shift.velocity_x;
+  ParticleRecord<D>& p = particles_[at(i)];
+  const double vx_before = p.v[0];
+  p.r[0] += shift.position.x;
+  p.r[1] += shift.position.y;
+  p.v[0] += shift.velocity_x;
   if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, velocity_[0][at(i)]};
+  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, p.v[0]};
   for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
 

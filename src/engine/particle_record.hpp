@@ -1,0 +1,26 @@
+// One record per particle with what a neighbour's collision test reads: position and velocity at
+// the particle's local time t, and the link of its cell list; with its collision counter.  A test
+// then touches one record, 48 bytes for disks and 64 (one cache line) for spheres, where it read
+// six separate arrays before (issue 18; docs/performance.md).  The rest of a particle's data
+// (its pending event, cell, candidate time) is read only when its own event runs and stays in
+// arrays beside the records.
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/vec.hpp"
+
+namespace granule {
+
+template <int D>
+struct ParticleRecord {
+  Vec<D> r;                 // position at local time t
+  Vec<D> v;                 // velocity at local time t
+  double t = 0.0;           // local time (relative to the engine's clock base)
+  std::int32_t next = -1;   // the next particle in the same cell (CellLists), −1 at the end
+  std::uint32_t count = 0;  // collisions so far: invalidates predictions that involve this particle
+};
+
+static_assert(sizeof(ParticleRecord<2>) == 48 && sizeof(ParticleRecord<3>) == 64);
+
+}  // namespace granule
