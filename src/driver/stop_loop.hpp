@@ -3,7 +3,7 @@
 // of the time series, field frames, measurement windows) is a StopClient naming its next stop;
 // the loop runs the engine to the earliest of them and lets each client act, in order.  The
 // engine's own global actions (grid re-alignment, shear-protocol segments) never stop it: they
-// live beside its event heap (events/timed_actions.hpp).  A stop changes no bit of the
+// live beside its event queue (events/timed_actions.hpp).  A stop changes no bit of the
 // trajectory (tests/validation/test_exact_continuation.cpp).
 #pragma once
 

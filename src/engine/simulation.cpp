@@ -105,7 +105,7 @@ double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(cell_) +
                       bytes(last_collision_) + bytes(kind_) + bytes(partner_) + bytes(partner_count_) +
-                      bytes(collision_time_) + lists_.bytes() + heap_.bytes();
+                      bytes(collision_time_) + lists_.bytes() + queue_.bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
@@ -142,7 +142,7 @@ void Simulation<D>::rebase() {
   for (auto& p : particles_) p.t -= delta;
   for (auto& t : last_collision_) t -= delta;
   for (auto& t : collision_time_) t -= delta;
-  heap_.shift_times(delta);
+  queue_.shift_times(delta);
   collapse_detector_.shift_times(delta);
   actions_.shift_times(delta);
   t_ref_ -= delta;
@@ -185,7 +185,7 @@ void Simulation<D>::rebuild() {
     cell_[at(i)] = cell_of(position_now(i));
     lists_.insert(particles_, i, cell_[at(i)]);
   }
-  heap_.reset(n);
+  queue_.reset(n);
   for (std::int32_t i = 0; i < n; ++i) predict(i);
 }
 
@@ -400,7 +400,7 @@ void Simulation<D>::store(std::int32_t i, const Prediction& next) {
   partner_[at(i)] = next.partner;
   partner_count_[at(i)] = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
   collision_time_[at(i)] = t_now_ + next.collision_delay;
-  heap_.update(i, t_now_ + next.delay());
+  queue_.update(i, t_now_ + next.delay());
 }
 
 // Why the layer ahead suffices: every pair (i, j) of neighbours is covered, meaning that the event
@@ -543,7 +543,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
   while (true) {
     if (interrupt_ && *interrupt_) return StopReason::kInterrupted;
-    const double t_event = heap_.top_time();
+    const double t_event = queue_.top_time();
     const double t_action = actions_.earliest_time();
     // The stop is decided on the absolute clock the caller reads, time() = clock_base_ + t_now_,
     // so that kTimeReached always means time() ≥ until_time: a stop one ulp short would make the
@@ -568,7 +568,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       while (clock_base_ + t_now_ < until_time) t_now_ = std::nextafter(t_now_, t_event);
       return StopReason::kTimeReached;
     }
-    const std::int32_t i = heap_.top();
+    const std::int32_t i = queue_.top();
     t_now_ = t_event;
     ++events_;
     // Re-based on a count of events alone, before any early return, so that the trajectory does

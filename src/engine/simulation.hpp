@@ -1,10 +1,10 @@
 // The event loop of the thesis's Appendix A for disks (D = 2) and spheres (D = 3), monodisperse
-// or polydisperse: one pending event per particle (its earliest collision or cell crossing) in an
-// indexed heap; lazy free flight with per-particle local
+// or polydisperse: one pending event per particle (its earliest collision or cell crossing) in a
+// calendar queue (events/event_queue.hpp); lazy free flight with per-particle local
 // times; stale events caught by collision counters; periodic re-basing of the clock; a sheared
 // cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp); and a time-
 // dependent image velocity U(t) in constant segments (boundary/shear_protocol.hpp), its changes
-// and the grid's re-alignments kept as global timed actions beside the heap; and, per axis, flat
+// and the grid's re-alignments kept as global timed actions beside the queue; and, per axis, flat
 // walls instead of images, parabolic flights under gravity and spinning rough grains
 // (ARCHITECTURE.md, "Spin, walls and gravity").
 #pragma once
@@ -26,7 +26,7 @@
 #include "engine/state_archive.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
-#include "events/event_heap.hpp"
+#include "events/event_queue.hpp"
 #include "events/timed_actions.hpp"
 #include "physics/collision_law.hpp"
 #include "physics/rough_collision_rule.hpp"
@@ -97,7 +97,7 @@ class Simulation {
   }
 
   // Checks every invariant of the engine — no overlaps beyond round-off, each disk in the cell
-  // its position gives, lists and heap consistent, every pending event still valid and not
+  // its position gives, lists and queue consistent, every pending event still valid and not
   // later than a fresh prediction — and throws std::logic_error describing the first violation.
   // O(N) with the 3^D stencil; the GRANULE_PARANOID build runs it at every re-base.
   void check_invariants() const;
@@ -106,7 +106,7 @@ class Simulation {
 
   double time() const { return clock_base_ + t_now_; }
   // Absolute time of the earliest pending event (+inf when nothing will happen).
-  double next_event_time() const { return clock_base_ + heap_.top_time(); }
+  double next_event_time() const { return clock_base_ + queue_.top_time(); }
   std::int64_t collisions() const { return collisions_; }
   std::int64_t events() const { return events_; }
   double collisions_per_particle() const {
@@ -127,7 +127,7 @@ class Simulation {
  private:
   void allocate_arrays();
   // The arrays and clocks a checkpoint holds by name (simulation_checkpoint.cpp); the event kinds,
-  // cell lists, heap and collapse detector are saved by their own code.
+  // cell lists, queue and collapse detector are saved by their own code.
   template <typename Self, typename Visit>
   static void visit_saved_state(Self& self, Visit&& visit);
   void load(const ParticleState& state);
@@ -290,7 +290,7 @@ class Simulation {
   bool has_gravity_ = false;
   std::vector<std::int32_t> cell_;
   std::vector<double> last_collision_;  // TC model only
-  // Pending event of each particle (its time lives in the heap).
+  // Pending event of each particle (its time lives in the queue).
   std::vector<EventKind> kind_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint32_t> partner_count_;
@@ -299,7 +299,7 @@ class Simulation {
   std::vector<double> collision_time_;
 
   CellLists lists_;
-  EventHeap heap_;
+  EventQueue queue_;
   TimedActions actions_;
   CollapseDetector collapse_detector_;
   CollapseReport collapse_;

@@ -1,5 +1,5 @@
 // Checkpoints of the engine: everything that decides its future — positions at local times,
-// pending events, cell-list and heap order (they break ties), clocks, TC history, the collapse
+// pending events, cell-list order (it breaks ties between equal collision times), clocks, TC history, the collapse
 // detector — so that a run restored from one continues bit for bit (tests/validation).
 #include <map>
 #include <stdexcept>
@@ -192,7 +192,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
   lists_.save(archive, prefix + "cell_list_");
-  heap_.save(archive, prefix + "heap_");
+  queue_.save(archive, prefix + "queue_");
   collapse_detector_.save(archive, prefix + "collapse_");
 }
 
@@ -250,7 +250,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     }
   }
   lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), particles_);
-  heap_.restore(archive, prefix + "heap_", static_cast<std::int32_t>(params.particles));
+  queue_.restore(archive, prefix + "queue_", static_cast<std::int32_t>(params.particles));
   collapse_detector_.restore(archive, prefix + "collapse_");
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.
   try {

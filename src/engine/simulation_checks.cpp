@@ -32,7 +32,7 @@ template <typename... Parts>
 template <int D>
 void Simulation<D>::check_invariants() const {
   const auto n = static_cast<std::int32_t>(params_.particles);
-  if (!heap_.is_consistent()) fail("the event heap is out of order");
+  if (!queue_.is_consistent()) fail("the event queue is inconsistent");
   // Every particle in exactly one list, the list of its own cell.
   std::vector<std::uint8_t> seen(at(n), 0);
   for (std::int64_t c = 0; c < grid_.cell_count(); ++c) {
@@ -73,13 +73,13 @@ void Simulation<D>::check_invariants() const {
     });
     // One event per particle (Smallenburg 2022): a particle's slot is never later than its true
     // next event, unless the partner of that event holds it in its own slot.
-    const double stored = heap_.time_of(i);
+    const double stored = queue_.time_of(i);
     if (stored < t_now_) fail("particle ", i, " has an event in the past");
     const Prediction fresh = next_event(i);
     const EventKind kind = fresh.kind();
     if (kind == EventKind::kNone) continue;
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance);
-    const bool held = stored <= due || (kind == EventKind::kCollision && heap_.time_of(fresh.partner) <= due);
+    const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
     if (!held) {
       fail("particle ", i, " has its next event (", static_cast<int>(kind), " with ", fresh.partner, ") at t = ", t_now_ + fresh.delay(), " but its slot says ", stored);
     }

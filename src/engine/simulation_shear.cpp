@@ -1,7 +1,7 @@
 // The Lees–Edwards side of the engine (ARCHITECTURE.md, "Shear protocols"): images of partners and
 // of disks leaving the box, the image offset, the re-alignment of the sheared grid, and the changes
 // of the image velocity U that follow the shear protocol segment by segment (the last two are
-// global timed actions beside the event heap).
+// global timed actions beside the event queue).
 #include <cmath>
 #include <limits>
 
@@ -61,7 +61,7 @@ void Simulation<D>::repredict_after_shear_change() {
     const double t_crossing = t_now_ + crossing.delay;
     const bool collision_first = collision_time_[at(i)] < t_crossing;
     kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;
-    heap_.update(i, collision_first ? collision_time_[at(i)] : t_crossing);
+    queue_.update(i, collision_first ? collision_time_[at(i)] : t_crossing);
   }
 }
 

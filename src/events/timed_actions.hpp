@@ -1,4 +1,4 @@
-// The engine's global timed actions, kept beside the per-particle event heap: re-aligning the
+// The engine's global timed actions, kept beside the per-particle event queue: re-aligning the
 // sheared cell grid and moving to the next segment of the shear protocol.  Each kind is pending at
 // most once, so the list is a fixed array and "the earliest" a scan of two entries.  Stops and
 // timed outputs are not in it: they are the caller's (the driver's) times, passed to run().

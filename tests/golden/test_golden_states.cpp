@@ -77,10 +77,10 @@ TEST_P(GoldenState, FinalStateHashIsUnchanged) {
 
 INSTANTIATE_TEST_SUITE_P(
     Runs, GoldenState,
-    ::testing::Values(GoldenCase{"free_cooling_tc", 2000, 0.05, 0.6, 0.0, 1e-7, 40.0, 1995, 0x0cd78e11ed048b04ULL},
-                      GoldenCase{"lees_edwards_tc", 1500, 0.2, 0.8, 30.0, 1e-6, 40.0, 7, 0xeff5f764c4d6a7f5ULL},
-                      GoldenCase{"dense_elastic", 1200, 0.6, 1.0, 0.0, 0.0, 30.0, 3, 0xfd6c90c21248e06cULL},
-                      GoldenCase{"lees_edwards_protocol", 1500, 0.1, 0.7, 20.0, 1e-6, 40.0, 12, 0xc2fd218e0af143b4ULL, true}),
+    ::testing::Values(GoldenCase{"free_cooling_tc", 2000, 0.05, 0.6, 0.0, 1e-7, 40.0, 1995, 0xd3297e4829867e50ULL},
+                      GoldenCase{"lees_edwards_tc", 1500, 0.2, 0.8, 30.0, 1e-6, 40.0, 7, 0x605329950098a518ULL},
+                      GoldenCase{"dense_elastic", 1200, 0.6, 1.0, 0.0, 0.0, 30.0, 3, 0x86706d463aed0ef9ULL},
+                      GoldenCase{"lees_edwards_protocol", 1500, 0.1, 0.7, 20.0, 1e-6, 40.0, 12, 0x0ea69a738738344fULL, true}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace

@@ -1,0 +1,90 @@
+// The pending event time of every particle, ordered by (time, particle id): a calendar of time
+// buckets (Brown 1988; Smallenburg, Eur. Phys. J. E 45, 22 (2022), keeps his events so), with the
+// events of the current bucket in a small binary heap.  Re-scheduling a particle is O(1) expected
+// where the binary heap of every particle it replaced cost O(log N) cache misses (a quarter of the
+// run time at N = 10⁵: docs/performance.md).
+//
+// Ties are broken by the particle id, so the order of pops is a function of the times alone: not
+// of the bucket width, of the calendar's layout or of the order of the updates.  The width is
+// therefore re-tuned freely (at every re-base, and when the current bucket grows too full), and a
+// checkpoint holds only the times.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/state_archive.hpp"
+
+namespace granule {
+
+class EventQueue {
+ public:
+  // All particles present, at time +inf.
+  void reset(std::int32_t particles);
+  // Set a particle's event time (any non-NaN double; +inf: nothing pending).
+  void update(std::int32_t particle, double time);
+  // The particle whose event comes first (the lowest id of a tie; particle 0 when every time is
+  // +inf), and its time.
+  std::int32_t top() const {
+    settle();
+    return current_.empty() ? 0 : current_.front();
+  }
+  double top_time() const { return time_[static_cast<std::size_t>(top())]; }
+  double time_of(std::int32_t particle) const { return time_[static_cast<std::size_t>(particle)]; }
+  // Every particle is where its time says and the current bucket is in heap order (the
+  // GRANULE_PARANOID build checks it at every re-base).
+  bool is_consistent() const;
+  // Subtract the same amount from every time (clock re-basing); order is preserved.
+  void shift_times(double delta);
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles);
+  std::size_t bytes() const {
+    return time_.capacity() * sizeof(double) + (next_.capacity() + previous_.capacity() + heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
+  }
+
+ private:
+  // previous_ of a particle not in a bucket list: +inf time, or in the current bucket's heap.
+  static constexpr std::int32_t kUnscheduled = -3;
+  static constexpr std::int32_t kCurrent = -2;
+  static constexpr std::int32_t kFirst = -1;  // first of its bucket list
+
+  std::int64_t bucket_of(double time) const;
+  std::size_t slot_of(std::int64_t bucket) const { return static_cast<std::size_t>(bucket) & (heads_.size() - 1); }
+  bool earlier(std::int32_t a, std::int32_t b) const {
+    const double ta = time_[static_cast<std::size_t>(a)];
+    const double tb = time_[static_cast<std::size_t>(b)];
+    return ta < tb || (ta == tb && a < b);
+  }
+  void insert(std::int32_t particle) const;
+  void remove(std::int32_t particle) const;
+  void link(std::int32_t particle, std::size_t slot) const;
+  void unlink(std::int32_t particle, std::size_t slot) const;
+  void push_current(std::int32_t particle) const;
+  void erase_current(std::size_t position) const;
+  void sift_up(std::size_t position) const;
+  void sift_down(std::size_t position) const;
+  void place(std::size_t position, std::int32_t particle) const {
+    current_[position] = particle;
+    next_[static_cast<std::size_t>(particle)] = static_cast<std::int32_t>(position);
+  }
+  // Make the current bucket the earliest non-empty one (the calendar moves lazily, when the top
+  // is asked for, so that updates at times before a jump never meet a calendar ahead of them).
+  void settle() const;
+  // Re-distribute every event with a bucket width fitted to the present spread of times.
+  void rebuild() const;
+
+  std::vector<double> time_;
+  // The calendar's state changes when the top is looked up (settle), which the engine does in its
+  // const queries: it is mutable, the order it gives is not.
+  mutable std::vector<std::int32_t> next_;      // next in its bucket list, or its position in current_
+  mutable std::vector<std::int32_t> previous_;  // previous in its bucket list, or a marker above
+  mutable std::vector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
+  mutable std::vector<std::int32_t> current_;   // the current bucket: a binary heap by (time, id)
+  mutable std::int64_t bucket_ = 0;             // the current bucket
+  mutable double width_ = 1.0;                  // of a bucket, in time
+  mutable std::int64_t listed_ = 0;             // events in bucket lists
+  mutable std::size_t crowded_ = 0;             // current_'s size that asks for a new width
+};
+
+}  // namespace granule
