@@ -306,10 +306,12 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }
     const Simulation<D>& sim = session->simulation();
-    fmt::print("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions in {:.3g} s ({:.3g} collisions/s)\n",
+    const auto prerun = summary["prerun_collisions_this_invocation"].get<std::int64_t>();
+    fmt::print("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions{} in {:.3g} s ({:.3g} collisions/s)\n",
                reason == StopReason::kInterrupted ? "stopped" : "finished", stop_text(reason), sim.time(),
-               sim.collisions_per_particle(), sim.collisions(), summary["wall_seconds"].get<double>(),
-               summary["collisions_per_second"].get<double>());
+               sim.collisions_per_particle(), sim.collisions(),
+               prerun > 0 ? fmt::format(" (+ {} in the elastic pre-run)", prerun) : std::string{},
+               summary["wall_seconds"].get<double>(), summary["collisions_per_second"].get<double>());
     fmt::print("outputs in {}: config.toml, checkpoint.h5, summary.json{}\n", out,
                session->snapshot_frames() > 0
                    ? fmt::format(", timeseries.csv, snapshots.h5 ({} frames){}", session->snapshot_frames(),

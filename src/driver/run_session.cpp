@@ -81,6 +81,7 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
 template <int D>
 void RunSession<D>::start_production() {
   const SystemParams& system = config_.system;
+  segment_prerun_collisions_ = sim_->collisions() - segment_start_collisions_;
   sim_->start_production(system);
   segment_start_collisions_ = 0;
   diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
@@ -259,7 +260,7 @@ nlohmann::json RunSession<D>::finish(StopReason reason) {
   }
   const double segment_seconds = progress_.seconds_since_start();
   const RunFacts facts{earlier_wall_seconds_ + segment_seconds, segment_seconds, sim_->collisions() - segment_start_collisions_,
-                       equilibrate_collisions_, snapshot_frames()};
+                       segment_prerun_collisions_, equilibrate_collisions_, snapshot_frames()};
   nlohmann::json summary = summary_json(config_, *sim_, grid_, reason, facts, samples_);
   if (measurements_) summary["measurements"] = measurements_->finish(*sim_);
   for (const auto& [name, schedule] : {std::pair{"output.every_time", &sampling_}, {"output.snapshot_every_time", &snapshotting_}}) {

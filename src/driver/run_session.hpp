@@ -95,6 +95,7 @@ class RunSession final : public StopClient<D> {
   Progress progress_;
   double earlier_wall_seconds_ = 0.0;  // of the segments before a resume
   std::int64_t segment_start_collisions_ = 0;
+  std::int64_t segment_prerun_collisions_ = 0;  // executed by this invocation before production
   double last_checkpoint_wall_ = 0.0;
   double last_csv_wall_ = 0.0;
 };

@@ -81,10 +81,13 @@ nlohmann::json summary_json(const RunConfig& config, const Simulation<D>& sim, c
   j["events"] = sim.events();
   j["equilibrate_collisions"] = facts.equilibrate_collisions;
   j["wall_seconds"] = facts.wall_seconds;
-  // The speed of this invocation: a resumed run's earlier segments ran elsewhere, maybe.
-  j["collisions_per_second"] = facts.segment_wall_seconds > 0.0
-                                   ? static_cast<double>(facts.segment_collisions) / facts.segment_wall_seconds
-                                   : 0.0;
+  // The speed of this invocation, pre-run collisions included (they took part of its wall time): a
+  // resumed run's earlier segments ran elsewhere, maybe.
+  j["collisions_per_second"] =
+      facts.segment_wall_seconds > 0.0
+          ? static_cast<double>(facts.segment_collisions + facts.segment_prerun_collisions) / facts.segment_wall_seconds
+          : 0.0;
+  j["prerun_collisions_this_invocation"] = facts.segment_prerun_collisions;
   j["t"] = sim.time();
   j["c"] = sim.collisions_per_particle();
   j["stop_reason"] = stop_text(reason);

@@ -17,7 +17,8 @@ const char* stop_text(StopReason reason);
 struct RunFacts {
   double wall_seconds = 0.0;          // of all segments of the run (resumed ones included)
   double segment_wall_seconds = 0.0;  // of this invocation
-  std::int64_t segment_collisions = 0;
+  std::int64_t segment_collisions = 0;          // of production, in this invocation
+  std::int64_t segment_prerun_collisions = 0;   // of the elastic pre-run, in this invocation
   std::int64_t equilibrate_collisions = 0;
   std::int64_t snapshots = 0;
 };
