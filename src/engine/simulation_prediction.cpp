@@ -1,0 +1,187 @@
+// Prediction: the next event of a particle — the first cell face or wall it reaches and the
+// earliest collision in the cells it scans — and storing it as the particle's one pending event
+// (ARCHITECTURE.md, "Speed": the layer scan after a crossing).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "engine/simulation.hpp"
+#include "physics/collision_time.hpp"
+#include "physics/crossing_time.hpp"
+
+namespace granule {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
+}  // namespace
+
+template <int D>
+typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const Vector& r,
+                                                              const Vector& v) const {
+  const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+  const double vyi = v[1];
+
+  // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
+  // b = v_x (plus ½g_x under gravity, which Lees–Edwards allows only with g_y = 0).
+  const double s = strain();
+  const double y_rel = r[1] - 0.5 * params_.length_y;
+  const double xi0 = r[0] - s * y_rel;
+  double a = -shear_rate_ * vyi;
+  if (has_gravity_) a += 0.5 * gravity_[0];
+  const double b = v[0] - shear_rate_ * y_rel - s * vyi;
+  const double left = cell[0] * grid_.width;
+  const double right = left + grid_.width;
+  // A wall face of a boundary cell is never crossed: the wall is hit first (below).
+  const bool wall_x = params_.walls[0];
+  double best = wall_x && cell[0] == grid_.nx - 1 ? kInf : first_exit_time(a, b, xi0 - right);
+  EventKind kind = crossing_through(0, 1);
+  if (const double t = wall_x && cell[0] == 0 ? kInf : first_exit_time(-a, -b, left - xi0); t < best) {
+    best = t;
+    kind = crossing_through(0, 0);
+  }
+  // The other axes are not sheared: straight (or parabolic) flight between planes.
+  for (int axis = 1; axis < D; ++axis) {
+    const double va = v[axis];
+    const double size = grid_.size(axis);
+    const bool wall = params_.walls[static_cast<std::size_t>(axis)];
+    if (has_gravity_) {
+      const double half_g = 0.5 * gravity_[axis];
+      const double upper = (cell[axis] + 1) * size;
+      const double lower = cell[axis] * size;
+      if (!(wall && cell[axis] == grid_.count(axis) - 1)) {
+        if (const double t = first_exit_time(half_g, va, r[axis] - upper); t < best) {
+          best = t;
+          kind = crossing_through(axis, 1);
+        }
+      }
+      if (!(wall && cell[axis] == 0)) {
+        if (const double t = first_exit_time(-half_g, -va, lower - r[axis]); t < best) {
+          best = t;
+          kind = crossing_through(axis, 0);
+        }
+      }
+    } else if (va > 0.0) {
+      if (wall && cell[axis] == grid_.count(axis) - 1) continue;
+      if (const double t = std::max(0.0, ((cell[axis] + 1) * size - r[axis]) / va); t < best) {
+        best = t;
+        kind = crossing_through(axis, 1);
+      }
+    } else if (va < 0.0) {
+      if (wall && cell[axis] == 0) continue;
+      if (const double t = std::max(0.0, (cell[axis] * size - r[axis]) / va); t < best) {
+        best = t;
+        kind = crossing_through(axis, 0);
+      }
+    }
+  }
+  // Walls: contact when the centre is one radius from the wall, g(τ) = ±(contact − r_a(τ)) ≥ 0.
+  if (params_.has_walls()) {
+    const double radius = radius_of(i);
+    for (int axis = 0; axis < D; ++axis) {
+      if (!params_.walls[static_cast<std::size_t>(axis)]) continue;
+      const double half_g = has_gravity_ ? 0.5 * gravity_[axis] : 0.0;
+      const double length = box_length(axis);
+      if (const double t = first_exit_time(-half_g, -v[axis], radius - r[axis]); t < best) {
+        best = t;
+        kind = wall_hit(2 * axis);
+      }
+      if (const double t = first_exit_time(half_g, v[axis], r[axis] - (length - radius)); t < best) {
+        best = t;
+        kind = wall_hit(2 * axis + 1);
+      }
+    }
+  }
+  if (best == kInf) kind = EventKind::kNone;
+  return {kind, best};
+}
+
+template <int D>
+typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i, const Reach& reach, Candidate known) const {
+  return has_gravity_ ? next_event_in<true>(i, reach, known) : next_event_in<false>(i, reach, known);
+}
+
+template <int D>
+template <bool kGravity>
+typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, const Reach& reach,
+                                                                Candidate known) const {
+  const Vector ri = position_now(i);
+  const Vector vi = velocity_now(i);
+  const Crossing crossing = next_crossing(i, ri, vi);
+
+  // Collisions with the particles of the cells within reach.  Under a uniform gravity the relative
+  // motion of two grains is still a straight line: only their present states need it.
+  std::int32_t partner = known.partner;
+  double best = known.delay;
+  const bool polydisperse = !diameter_.empty();
+  const double sigma = params_.diameter;
+  for_each_neighbour(i, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
+    const ParticleRecord<D>& pj = particles_[at(j)];
+    const double dt_j = t_now_ - pj.t;
+    Vector rel_position;
+    Vector rel_velocity;
+    for (int a = 0; a < D; ++a) {
+      double vj = pj.v[a];
+      if constexpr (kGravity) {
+        rel_position[a] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
+        vj += gravity_[a] * dt_j;
+      } else {
+        rel_position[a] = pj.r[a] + vj * dt_j + shift[a] - ri[a];
+      }
+      rel_velocity[a] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
+    }
+    const double contact = polydisperse ? contact_distance(i, j) : sigma;
+    if (const double t = collision_time(rel_position, rel_velocity, contact); t < best) {
+      best = t;
+      partner = j;
+    }
+  });
+  return {crossing, partner, best};
+}
+
+template <int D>
+void Simulation<D>::predict(std::int32_t i) {
+  store(i, next_event(i));
+}
+
+template <int D>
+void Simulation<D>::store(std::int32_t i, const Prediction& next) {
+  kind_[at(i)] = next.kind();
+  partner_[at(i)] = next.partner;
+  partner_count_[at(i)] = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
+  collision_time_[at(i)] = t_now_ + next.collision_delay;
+  queue_.update(i, t_now_ + next.delay());
+}
+
+// Why the layer ahead suffices: every pair (i, j) of neighbours is covered, meaning that the event
+// slot of i or of j is no later than their collision.  A whole scan covers i's pairs; a collision
+// ends the coverage of its two particles' pairs only, and they are scanned whole again; a crossing
+// leaves every trajectory as it was, so a pair j that stays adjacent is covered as it was before —
+// by j's slot, or by i's candidate, which is kept here (while it is valid, that is while its
+// partner has not collided: otherwise i's slot, no later than the candidate, would have lost the
+// pairs the candidate stood for, and the whole block is scanned again).  The pairs of the layer
+// ahead are new to i and are scanned.
+template <int D>
+void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int direction) {
+  if (!candidate_valid(i)) {
+    predict(i);
+    return;
+  }
+  const Candidate kept{partner_[at(i)], collision_time_[at(i)] - t_now_};
+  store(i, next_event(i, Reach::layer_ahead(axis, direction), kept));
+}
+
+// The members defined in this file, for both dimensions (the class is instantiated in
+// simulation.cpp, once).
+template Simulation<2>::Crossing Simulation<2>::next_crossing(std::int32_t, const Vec<2>&, const Vec<2>&) const;
+template Simulation<2>::Prediction Simulation<2>::next_event(std::int32_t, const Reach&, Candidate) const;
+template void Simulation<2>::predict(std::int32_t);
+template void Simulation<2>::store(std::int32_t, const Prediction&);
+template void Simulation<2>::predict_after_crossing(std::int32_t, int, int);
+template Simulation<3>::Crossing Simulation<3>::next_crossing(std::int32_t, const Vec<3>&, const Vec<3>&) const;
+template Simulation<3>::Prediction Simulation<3>::next_event(std::int32_t, const Reach&, Candidate) const;
+template void Simulation<3>::predict(std::int32_t);
+template void Simulation<3>::store(std::int32_t, const Prediction&);
+template void Simulation<3>::predict_after_crossing(std::int32_t, int, int);
+
+}  // namespace granule
