@@ -83,7 +83,12 @@ class Simulation {
   // extrapolated from each particle's last event without touching the engine; with the
   // per-particle diameters and masses of a polydisperse run.
   ParticleState state() const;
+  // Particles first .. first + count - 1 of state() (a large state written block by block).
+  ParticleState state(std::size_t first, std::size_t count) const;
   ClockState clock_state() const;
+  // Per-particle diameters and masses of a polydisperse run (empty otherwise).
+  const std::vector<double>& diameters() const { return diameter_; }
+  const std::vector<double>& masses() const { return mass_; }
 
   // Switch on the restitutions of `production` (normal, tangential, walls: the thesis's elastic
   // pre-run ends here), restart t and c at 0 and start the shear protocol: from here on U follows

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +57,11 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   void append(const SnapshotFrame& frame);
+  // A frame whose particles (frame.particles is not read) come in blocks: `block(first, count)`
+  // gives particles first .. first + count - 1, so that a frame of 10^8 disks needs no copy of the
+  // whole state.
+  using ParticleBlocks = std::function<ParticleState(std::size_t first, std::size_t count)>;
+  void append(const SnapshotFrame& frame, const ParticleBlocks& block);
   std::int64_t frames() const;
   // Close and rename to the final name.
   void finish();
