@@ -87,7 +87,7 @@ void RunSession<D>::start_production() {
   diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
-  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
+  samples_.push_back(diagnostics_->sample(sim_->state_blocks(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
                                           sim_->shear_offset()));
   SnapshotMetadata metadata;
   metadata.system = system;
@@ -177,12 +177,12 @@ void RunSession<D>::append_snapshot() {
   // Written block by block from the engine: no copy of the whole state beside it (10^8 disks).
   snapshots_->append({{}, sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(), sim_->strain(),
                       sim_->image_velocity()},
-                     [this](std::size_t first, std::size_t count) { return sim_->state(first, count); });
+                     sim_->state_blocks());
 }
 
 template <int D>
 void RunSession<D>::take_sample() {
-  const ParticleState state = sim_->state();
+  const StateBlocks state = sim_->state_blocks();
   samples_.push_back(
       diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity(), sim_->shear_offset()));
   measurements_->on_sample(state, sim_->collisions(), sim_->image_velocity());

@@ -24,6 +24,7 @@
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
 #include "engine/state_archive.hpp"
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
 #include "events/event_queue.hpp"
@@ -85,6 +86,10 @@ class Simulation {
   ParticleState state() const;
   // Particles first .. first + count - 1 of state() (a large state written block by block).
   ParticleState state(std::size_t first, std::size_t count) const;
+  // state() in blocks, each extrapolated when it is read: valid while the engine stands still.
+  StateBlocks state_blocks() const {
+    return StateBlocks(particles_.size(), [this](std::size_t first, std::size_t count) { return state(first, count); });
+  }
   ClockState clock_state() const;
   // Per-particle diameters and masses of a polydisperse run (empty otherwise).
   const std::vector<double>& diameters() const { return diameter_; }

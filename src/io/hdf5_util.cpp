@@ -258,6 +258,15 @@ hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_
     max.push_back(d);
     chunk.push_back(d);
   }
+  // A chunk holds at most kChunkEntries entries of a frame (1 MiB of doubles, HDF5's default chunk
+  // cache): a frame of 10^8 disks written block by block then needs no buffer of a whole frame
+  // inside HDF5, and no chunk reaches HDF5's limit of 4 GiB.
+  constexpr hsize_t kChunkEntries = hsize_t{1} << 17;
+  if (chunk.size() > 1) {
+    hsize_t per_row = 1;
+    for (std::size_t k = 2; k < chunk.size(); ++k) per_row *= chunk[k];
+    chunk[1] = std::clamp<hsize_t>(kChunkEntries / std::max<hsize_t>(per_row, 1), 1, std::max<hsize_t>(chunk[1], 1));
+  }
   Handle space = owned(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), H5Sclose, file,
                        "describe dataset", name);
   Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, file, name);

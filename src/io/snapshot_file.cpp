@@ -187,21 +187,15 @@ SnapshotWriter::~SnapshotWriter() = default;
 
 std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
 
-void SnapshotWriter::append(const SnapshotFrame& frame) {
-  if (frame.particles.size() != static_cast<std::size_t>(particles_)) throw std::logic_error("a snapshot frame of the wrong size");
-  append(frame, [&frame](std::size_t first, std::size_t count) { return frame.particles.slice(first, count); });
-}
+void SnapshotWriter::append(const SnapshotFrame& frame) { append(frame, StateBlocks(frame.particles)); }
 
-void SnapshotWriter::append(const SnapshotFrame& frame, const ParticleBlocks& block) {
-  constexpr std::size_t kBlock = std::size_t{1} << 16;
+void SnapshotWriter::append(const SnapshotFrame& frame, const StateBlocks& particles) {
+  if (particles.size() != static_cast<std::size_t>(particles_)) throw std::logic_error("a snapshot frame of the wrong size");
   const hid_t f = file_->get();
   const auto k = static_cast<hsize_t>(file_->frames());
-  const auto n = static_cast<std::size_t>(particles_);
-  for (std::size_t first = 0; first < n; first += kBlock) {
-    const std::size_t count = std::min(kBlock, n - first);
-    const ParticleState p = block(first, count);
-    if (p.size() != count) throw std::logic_error("a snapshot block of the wrong size");
+  particles.for_each([&](const ParticleState& p, std::size_t first) {
     if (rough_ && !p.rough()) throw std::logic_error("a frame of smooth grains in a snapshot file of rough ones");
+    const std::size_t count = p.size();
     const int d = p.dimension;
     const auto write = [&](const char* name, const std::vector<double>& rows) {
       append_frame_rows(f, name, H5T_NATIVE_DOUBLE, rows.data(), k, first, count);
@@ -209,7 +203,7 @@ void SnapshotWriter::append(const SnapshotFrame& frame, const ParticleBlocks& bl
     write("positions", interleave(count, d, [&](int a) -> auto& { return p.position(a); }));
     write("velocities", interleave(count, d, [&](int a) -> auto& { return p.velocity(a); }));
     if (rough_) write("spins", interleave(count, p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); }));
-  }
+  });
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
   file_->end_frame();

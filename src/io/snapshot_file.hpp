@@ -5,11 +5,11 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -57,11 +57,9 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   void append(const SnapshotFrame& frame);
-  // A frame whose particles (frame.particles is not read) come in blocks: `block(first, count)`
-  // gives particles first .. first + count - 1, so that a frame of 10^8 disks needs no copy of the
-  // whole state.
-  using ParticleBlocks = std::function<ParticleState(std::size_t first, std::size_t count)>;
-  void append(const SnapshotFrame& frame, const ParticleBlocks& block);
+  // A frame whose particles (frame.particles is not read) come in blocks (a frame of 10^8 disks
+  // needs no copy of the whole state).
+  void append(const SnapshotFrame& frame, const StateBlocks& particles);
   std::int64_t frames() const;
   // Close and rename to the final name.
   void finish();
