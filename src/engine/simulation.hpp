@@ -251,7 +251,8 @@ class Simulation {
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
-  Crossing next_crossing(std::int32_t i, const Vector& position, const Vector& velocity) const;
+  Crossing next_crossing(std::int32_t i, const std::array<int, D>& cell, const Vector& position,
+                         const Vector& velocity) const;
   // Where the box's image one period away across a face sits relative to the box, and how fast
   // its particles move relative to their originals (the per-axis boundary rule): ±L_x along x,
   // ±L_z along z, and along y the Lees–Edwards image, offset by ±Δ along x and moving at ±U.
@@ -270,7 +271,12 @@ class Simulation {
   }
   // The same over the offsets within `reach`.
   template <typename Visit>
-  void for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const;
+  void for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
+    for_each_neighbour(i, cell_coordinates(cell_[static_cast<std::size_t>(i)]), reach, visit);
+  }
+  // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
+  template <typename Visit>
+  void for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach, Visit&& visit) const;
   // The image of a partner at lab offset `offset` from a particle in contact with it.
   struct PartnerImage {
     int image_y;  // −1, 0, +1: which vertical image
@@ -341,8 +347,8 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 
 template <int D>
 template <typename Visit>
-void Simulation<D>::for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
-  const std::array<int, D> cell = cell_coordinates(cell_[static_cast<std::size_t>(i)]);
+void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach,
+                                       Visit&& visit) const {
   const double s = strain();
   // The cells within reach with their images, in visiting order: layers (z, 3D only) outermost,
   // then rows (y), then columns (x).  The order decides which of two partners at equal times is

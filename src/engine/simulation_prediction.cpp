@@ -17,9 +17,8 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
 template <int D>
-typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const Vector& r,
-                                                              const Vector& v) const {
-  const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const std::array<int, D>& cell,
+                                                              const Vector& r, const Vector& v) const {
   const double vyi = v[1];
 
   // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
@@ -107,7 +106,8 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
                                                                 Candidate known) const {
   const Vector ri = position_now(i);
   const Vector vi = velocity_now(i);
-  const Crossing crossing = next_crossing(i, ri, vi);
+  const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+  const Crossing crossing = next_crossing(i, cell, ri, vi);
 
   // Collisions with the particles of the cells within reach.  Under a uniform gravity the relative
   // motion of two grains is still a straight line: only their present states need it.
@@ -115,7 +115,7 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   double best = known.delay;
   const bool polydisperse = !diameter_.empty();
   const double sigma = params_.diameter;
-  for_each_neighbour(i, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
+  for_each_neighbour(i, cell, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
     const ParticleRecord<D>& pj = particles_[at(j)];
     const double dt_j = t_now_ - pj.t;
     Vector rel_position;
@@ -173,12 +173,14 @@ void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int directi
 
 // The members defined in this file, for both dimensions (the class is instantiated in
 // simulation.cpp, once).
-template Simulation<2>::Crossing Simulation<2>::next_crossing(std::int32_t, const Vec<2>&, const Vec<2>&) const;
+template Simulation<2>::Crossing Simulation<2>::next_crossing(std::int32_t, const std::array<int, 2>&, const Vec<2>&,
+                                                               const Vec<2>&) const;
 template Simulation<2>::Prediction Simulation<2>::next_event(std::int32_t, const Reach&, Candidate) const;
 template void Simulation<2>::predict(std::int32_t);
 template void Simulation<2>::store(std::int32_t, const Prediction&);
 template void Simulation<2>::predict_after_crossing(std::int32_t, int, int);
-template Simulation<3>::Crossing Simulation<3>::next_crossing(std::int32_t, const Vec<3>&, const Vec<3>&) const;
+template Simulation<3>::Crossing Simulation<3>::next_crossing(std::int32_t, const std::array<int, 3>&, const Vec<3>&,
+                                                               const Vec<3>&) const;
 template Simulation<3>::Prediction Simulation<3>::next_event(std::int32_t, const Reach&, Candidate) const;
 template void Simulation<3>::predict(std::int32_t);
 template void Simulation<3>::store(std::int32_t, const Prediction&);

@@ -57,7 +57,7 @@ void Simulation<D>::repredict_after_shear_change() {
       continue;
     }
     // The earliest collision inside the box is unchanged; the crossing in ξ is not.
-    const Crossing crossing = next_crossing(i, position_now(i), velocity_now(i));
+    const Crossing crossing = next_crossing(i, cell_coordinates(cell_[static_cast<std::size_t>(i)]), position_now(i), velocity_now(i));
     const double t_crossing = t_now_ + crossing.delay;
     const bool collision_first = collision_time_[at(i)] < t_crossing;
     kind_[at(i)] = collision_first ? EventKind::kCollision : crossing.kind;

@@ -20,6 +20,10 @@ double coordinate_in_box(const SystemParams& p, int axis, double sigma, double u
   return std::min(radius + u * (length - sigma), length - radius);
 }
 
+// std::round(q) for |q| < 1.5 (the offset of two positions in a box, in box lengths), inline: the
+// library call took a quarter of the placement's time at φ = 0.30.
+double nearest_whole_of_small(double q) { return q >= 0.5 ? 1.0 : (q <= -0.5 ? -1.0 : 0.0); }
+
 // The cells within one cell of `cell` in a periodic row of `cells`, each once.
 int neighbour_count(int cells) { return std::min(cells, 3); }
 int neighbour(int cell, int k, int cells) { return cells >= 3 ? (cell + k - 1 + cells) % cells : k; }
@@ -42,7 +46,7 @@ bool overlaps_placed(const SystemParams& p, const PlacementGrid& grid, const Par
           double distance_sq = 0.0;
           for (int a = 0; a < d; ++a) {
             double delta = placed.position(a)[jj] - r[a];
-            if (!p.walls[static_cast<std::size_t>(a)]) delta -= box_length(p, a) * std::round(delta / box_length(p, a));
+            if (!p.walls[static_cast<std::size_t>(a)]) delta -= box_length(p, a) * nearest_whole_of_small(delta / box_length(p, a));
             distance_sq += delta * delta;
           }
           if (distance_sq < contact_diameter * contact_diameter * (1.0 + 1e-9)) return true;
