@@ -83,14 +83,15 @@ def main():
         xs = sorted(by_x)
         means = [float(np.mean(by_x[x])) for x in xs]
         errors = [float(np.std(by_x[x], ddof=1) / np.sqrt(len(by_x[x]))) if len(by_x[x]) > 1 else 0.0 for x in xs]
-        label = ", ".join(f"{k} = {v}" for k, v in zip(others, label_values)) or "measured"
+        setting = ", ".join(f"{k} = {v}" for k, v in zip(others, label_values))
+        label = setting or "measured"
         colour = f"C{n % 10}"
         ax.errorbar(xs, means, yerr=errors, fmt="o", color=colour, capsize=3, label=label)
         line = {"label": label, "x": xs, "mean": means, "standard_error": errors}
         curves = theory_curve(a.granule, members, xs) if show_theory else None
         for (key, name), style in zip(THEORY.items(), ("-", "--")):
             if curves:
-                ax.plot(*curves[key], style, color=colour, lw=1, label=f"{name}, {label}")
+                ax.plot(*curves[key], style, color=colour, lw=1, label=f"{name}, {setting}" if setting else name)
                 line[key] = curves[key]
         data.append(line)
     ax.set(xlabel=a.x, ylabel=a.y, title=f"{a.y} against {a.x}")
