@@ -85,13 +85,8 @@ std::vector<PointRecord> run_points(const SweepRun& run, const std::vector<std::
   std::deque<std::size_t> waiting;
   for (std::size_t slot = 0; slot < indices.size(); ++slot) waiting.push_back(slot);
   std::vector<Running> running;
-  bool signal_forwarded = false;
   while (!waiting.empty() || !running.empty()) {
     const int signal = *run.interrupt;
-    if (signal != 0 && !signal_forwarded) {
-      for (const Running& r : running) kill(r.pid, signal);
-      signal_forwarded = true;
-    }
     if (signal == 0 && !waiting.empty() && static_cast<int>(running.size()) < jobs) {
       const std::size_t slot = waiting.front();
       waiting.pop_front();
@@ -107,7 +102,7 @@ std::vector<PointRecord> run_points(const SweepRun& run, const std::vector<std::
       continue;
     }
     if (signal != 0) waiting.clear();  // those never started stay pending
-    // Poll rather than block in waitpid: a signal to this process must reach the children at once.
+    // Poll rather than block in waitpid, so that a signal stops new starts at once.
     bool reaped = false;
     for (auto it = running.begin(); it != running.end();) {
       int status = 0;

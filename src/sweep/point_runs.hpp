@@ -19,8 +19,11 @@ struct SweepRun {
   std::string granule;  // the granule executable the points run with
   SweepDirectory dir;
   const SweepSpec* spec = nullptr;
-  // Non-zero once SIGINT or SIGTERM arrived (the signal): no new point starts, and the running
-  // ones get the signal, so that they write their checkpoints and can be resumed.
+  // Non-zero once SIGINT or SIGTERM arrived (the signal): no new point starts.  The running points
+  // are in the sweep's process group, so a Ctrl-C or a batch system's signal to the job reaches
+  // them too and they write their checkpoints.  The sweep does not pass the signal on: a run that
+  // got it twice (from the job and from the sweep) would take the second as "stop at once".
+  // A signal to the sweep process alone lets the running points finish.
   const volatile std::sig_atomic_t* interrupt = nullptr;
 };
 

@@ -149,8 +149,10 @@ check(slurm.returncode == 0 and slurm.stdout.count(" finished in ") == 2 and "ta
 long_spec = write("long.toml", BASE.replace("particles = 200", "particles = 3000").replace(
     "until_collisions_per_particle = 3", "until_collisions_per_particle = 400") + "[sweep]\nseeds = [11]\n")
 long_dir = WORK / "long"
+# In a session of its own, signalled as a whole, as a terminal's Ctrl-C or a batch system's time
+# limit signals a job: the running point gets the signal once and checkpoints.
 process = subprocess.Popen([GRANULE, "sweep", long_spec, "--out", long_dir], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           text=True)
+                           text=True, start_new_session=True)
 log = long_dir / "points" / "seed=11.log"
 # The run writes its config.toml once its signal handlers are in place, then runs for seconds.
 started = long_dir / "runs" / "seed=11" / "config.toml"
@@ -158,7 +160,7 @@ deadline = time.monotonic() + 60
 while not started.exists() and process.poll() is None and time.monotonic() < deadline:
     time.sleep(0.02)
 time.sleep(0.3)
-process.send_signal(signal.SIGTERM)
+os.killpg(process.pid, signal.SIGTERM)
 out, err = process.communicate(timeout=120)
 check(process.returncode == 143, f"an interrupted sweep exits 143: {process.returncode}: {err[-300:]}")
 interrupted = rows(long_dir)[0]
