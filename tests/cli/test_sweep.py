@@ -59,10 +59,10 @@ def without_timing(table):
     return [{k: v for k, v in row.items() if k not in TIMING} for row in table]
 
 
-def timed(*args, env=None):
+def timed(command, env=None):
+    """The finished process and its wall time in seconds."""
     start = time.monotonic()
-    result = subprocess.run([GRANULE, *map(str, args)] if args[0] != "mpirun" else list(map(str, args)),
-                            capture_output=True, text=True, timeout=300, env=env)
+    result = subprocess.run(list(map(str, command)), capture_output=True, text=True, timeout=300, env=env)
     return result, time.monotonic() - start
 
 
@@ -89,7 +89,7 @@ timings = {}
 
 # --- locally, two processes at once ------------------------------------------------------------
 local = WORK / "local"
-result, timings["local --jobs 2"] = timed("sweep", spec, "--out", local, "--jobs", "2")
+result, timings["local --jobs 2"] = timed([GRANULE, "sweep", spec, "--out", local, "--jobs", "2"])
 check(result.returncode == 0, f"local sweep: exit {result.returncode}: {result.stderr[-800:]}")
 reference = rows(local) if (local / "results.csv").exists() else []
 check(len(reference) == 8, f"8 points in results.csv, got {len(reference)}")
@@ -109,7 +109,7 @@ for name in names:
     check(ran.returncode == 0 and same_run(local / "runs" / name, plain), f"{name} equals a plain granule run of its config")
 
 # --- a second call skips what is done ------------------------------------------------------------
-result, seconds = timed("sweep", spec, "--out", local, "--jobs", "2")
+result = granule("sweep", spec, "--out", local, "--jobs", "2")
 check(result.returncode == 0 and result.stdout.count("skipped (finished before)") == 8,
       f"the restart skips all 8 points: {result.stdout[-500:]}")
 check(rows(local) == reference, "a restart leaves results.csv as it was")
@@ -122,8 +122,8 @@ if "built without MPI" in probe.stderr or shutil.which("mpirun") is None:
 else:
     shutil.rmtree(WORK / "probe", ignore_errors=True)
     mpi = WORK / "mpi"
-    result, timings["mpirun -n 2 --mpi"] = timed("mpirun", "--oversubscribe", "-n", "2", GRANULE, "sweep", spec, "--out",
-                                                 mpi, "--mpi", env=MPI_ENV)
+    result, timings["mpirun -n 2 --mpi"] = timed(["mpirun", "--oversubscribe", "-n", "2", GRANULE, "sweep", spec, "--out",
+                                                  mpi, "--mpi"], env=MPI_ENV)
     check(result.returncode == 0, f"MPI sweep: exit {result.returncode}: {result.stderr[-800:]}")
     check((mpi / "results.csv").exists() and without_timing(rows(mpi)) == without_timing(reference),
           "MPI results.csv equals the local one")
