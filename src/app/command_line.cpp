@@ -17,6 +17,7 @@
 #include "app/bench_command.hpp"
 #include "app/plot_command.hpp"
 #include "app/run_command.hpp"
+#include "app/sweep_command.hpp"
 #include "app/theory_command.hpp"
 #include "granule/version.hpp"
 #include "io/io_error.hpp"
@@ -58,6 +59,7 @@ int granule::app::run_granule(int argc, char** argv) {
   app.set_version_flag("--version", granule::kVersion);
   app.require_subcommand(1);
   granule::app::add_run_command(app);
+  granule::app::add_sweep_command(app);
   granule::app::add_bench_command(app);
   granule::app::add_theory_command(app);
   granule::app::add_analyze_command(app);

@@ -10,6 +10,7 @@ void add_plot_command(CLI::App& root) {
   add_plot_matplotlib_commands(*plot);
   add_plot_spacetime_command(*plot);
   add_plot_export_command(*plot);
+  add_plot_sweep_command(*plot);
 }
 
 }  // namespace granule::app

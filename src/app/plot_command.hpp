@@ -14,5 +14,6 @@ void add_plot_picture_commands(CLI::App& plot);     // config, movie
 void add_plot_matplotlib_commands(CLI::App& plot);  // fields, timeseries, profiles, phase
 void add_plot_spacetime_command(CLI::App& plot);    // spacetime
 void add_plot_export_command(CLI::App& plot);       // export (extended XYZ, VTK)
+void add_plot_sweep_command(CLI::App& plot);        // sweep (results.csv of granule sweep)
 
 }  // namespace granule::app

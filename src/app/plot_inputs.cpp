@@ -108,8 +108,19 @@ bool program_in_path(const std::string& name) {
   return false;
 }
 
+// Where python/granule_plots is: $GRANULE_PYTHON_DIR; else beside an installed binary
+// (<prefix>/bin/granule → <prefix>/share/granule/python); else, for a developer's build, the
+// source tree it was built from.
+fs::path plot_scripts_root() {
+  if (const char* chosen = std::getenv("GRANULE_PYTHON_DIR"); chosen != nullptr && *chosen != '\0') return chosen;
+  std::error_code ignored;
+  const fs::path installed = fs::read_symlink("/proc/self/exe", ignored).parent_path().parent_path() / GRANULE_INSTALLED_PYTHON_DIR;
+  if (fs::is_directory(installed / "granule_plots", ignored)) return installed;
+  return GRANULE_SOURCE_PYTHON_DIR;
+}
+
 int run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
-  const fs::path path = fs::path(GRANULE_PYTHON_DIR) / "granule_plots" / (script + ".py");
+  const fs::path path = plot_scripts_root() / "granule_plots" / (script + ".py");
   if (!fs::exists(path)) throw std::runtime_error(fmt::format("the plot script {} is missing", path.string()));
   std::vector<std::string> argv{GRANULE_SYSTEM_PYTHON, path.string()};
   argv.insert(argv.end(), arguments.begin(), arguments.end());

@@ -7,23 +7,23 @@
 
 namespace granule {
 
-namespace {
-
 // A value as the user wrote it, numbers in their shortest exact form ("1e+300", not the
 // 17 digits toml++ prints).
-std::string show_node(const toml::node& node) {
+std::string toml_value_text(const toml::node& node) {
   if (node.is_floating_point()) return fmt::format("{}", *node.value<double>());
   if (node.is_string()) return '"' + node.value_or(std::string{}) + '"';
   if (node.is_table()) return "a table";
   if (const toml::array* array = node.as_array()) {
     std::string out;
-    for (const toml::node& item : *array) out += (out.empty() ? "" : ", ") + show_node(item);
+    for (const toml::node& item : *array) out += (out.empty() ? "" : ", ") + toml_value_text(item);
     return "[" + out + "]";
   }
   std::ostringstream out;
   out << toml::node_view<const toml::node>{node};
   return out.str();
 }
+
+namespace {
 
 std::string join(const std::set<std::string>& items) {
   std::string out;
@@ -48,7 +48,7 @@ void ConfigReader::check_known_keys(const ConfigSchema& schema) const {
     const bool is_section = !name.empty() && section != schema.end();
     if (is_section && !node.is_table()) {
       throw ConfigError{fmt::format("{} = {} is not allowed: [{}] is a section (a table of keys)", name,
-                                    show_node(node), name)};
+                                    toml_value_text(node), name)};
     }
     if (node.is_table()) {
       if (!is_section) {
@@ -58,12 +58,12 @@ void ConfigReader::check_known_keys(const ConfigSchema& schema) const {
         const std::string inner_name{inner.str()};
         if (!section->second.count(inner_name)) {
           throw ConfigError{fmt::format("unknown key {}.{} (value {}); allowed keys in [{}]: {}", name, inner_name,
-                                        show_node(value), name, join(section->second))};
+                                        toml_value_text(value), name, join(section->second))};
         }
       }
     } else if (!schema.at("").count(name)) {
       throw ConfigError{fmt::format("unknown top-level key {} (value {}); allowed: {}, or a section such as [system]",
-                                    name, show_node(node), join(schema.at("")))};
+                                    name, toml_value_text(node), join(schema.at("")))};
     }
   }
 }
@@ -87,7 +87,7 @@ std::vector<std::pair<double, double>> ConfigReader::number_pairs(const std::str
   if (!node) return out;
   const auto fail = [&] {
     return ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty list of points [{}, ...] of finite numbers",
-                                   path, show_node(*node), what)};
+                                   path, toml_value_text(*node), what)};
   };
   const toml::array* list = node->as_array();
   if (!list || list->empty()) throw fail();
@@ -106,11 +106,11 @@ bool ConfigReader::table_with_keys(const std::string& path, const std::set<std::
   const toml::node* node = find(path);
   if (!node) return false;
   if (!node->is_table()) {
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected a table {{ {} }}", path, show_node(*node), join(allowed))};
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected a table {{ {} }}", path, toml_value_text(*node), join(allowed))};
   }
   for (const auto& [key, value] : *node->as_table()) {
     if (!allowed.count(std::string{key.str()})) {
-      throw ConfigError{fmt::format("unknown key {}.{} (value {}); allowed keys: {}", path, key.str(), show_node(value),
+      throw ConfigError{fmt::format("unknown key {}.{} (value {}); allowed keys: {}", path, key.str(), toml_value_text(value),
                                     join(allowed))};
     }
   }
@@ -128,7 +128,7 @@ std::optional<double> ConfigReader::number_if(const std::string& path, const std
   if (!node) return std::nullopt;
   const auto value = node->value<double>();
   if (!value || !std::isfinite(*value) || !allowed(*value)) {
-    throw ConfigError{fmt::format("{} = {} is out of range: allowed {}", path, show_node(*node), allowed_text)};
+    throw ConfigError{fmt::format("{} = {} is out of range: allowed {}", path, toml_value_text(*node), allowed_text)};
   }
   return *value + 0.0;  // -0.0 is 0 (and written as 0 by to_toml)
 }
@@ -138,7 +138,7 @@ std::optional<std::int64_t> ConfigReader::integer(const std::string& path, std::
   if (!node) return std::nullopt;
   const auto value = node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
   if (!value || *value < low || *value > high) {
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected an integer in [{}, {}]", path, show_node(*node), low, high)};
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected an integer in [{}, {}]", path, toml_value_text(*node), low, high)};
   }
   return value;
 }
@@ -148,7 +148,7 @@ std::optional<std::string> ConfigReader::text(const std::string& path, const std
   if (!node) return std::nullopt;
   const auto value = node->value<std::string>();
   if (!value || !allowed.count(*value)) {
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected one of {}", path, show_node(*node), join(allowed))};
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected one of {}", path, toml_value_text(*node), join(allowed))};
   }
   return value;
 }
@@ -158,7 +158,7 @@ std::optional<std::string> ConfigReader::path_text(const std::string& path) cons
   if (!node) return std::nullopt;
   const auto value = node->value<std::string>();
   if (!value || value->empty()) {
-    throw ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty string (a path)", path, show_node(*node))};
+    throw ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty string (a path)", path, toml_value_text(*node))};
   }
   return value;
 }
@@ -178,7 +178,7 @@ std::optional<std::vector<double>> ConfigReader::number_list(const std::string& 
   }
   if (out.size() == count) return out;
   const char* const counts[] = {"no", "one number", "two numbers", "three numbers"};
-  throw ConfigError{fmt::format("{} = {} is not allowed: expected {} ({} in {}){}", path, show_node(*node), shape,
+  throw ConfigError{fmt::format("{} = {} is not allowed: expected {} ({} in {}){}", path, toml_value_text(*node), shape,
                                 count < 4 ? counts[count] : "numbers", range.text(), why)};
 }
 
@@ -205,13 +205,13 @@ std::optional<std::vector<std::string>> ConfigReader::text_list(const std::strin
   }
   if (array && !out.empty() && out.size() == array->size()) return out;
   throw ConfigError{fmt::format("{} = {} is not allowed: expected a non-empty list of distinct names among {}{}", path,
-                                show_node(*node), join(allowed), why)};
+                                toml_value_text(*node), join(allowed), why)};
 }
 
 std::optional<bool> ConfigReader::boolean(const std::string& path) const {
   const toml::node* node = find(path);
   if (!node) return std::nullopt;
-  if (!node->is_boolean()) throw ConfigError{fmt::format("{} = {} is not allowed: expected true or false", path, show_node(*node))};
+  if (!node->is_boolean()) throw ConfigError{fmt::format("{} = {} is not allowed: expected true or false", path, toml_value_text(*node))};
   return node->value<bool>();
 }
 
@@ -222,7 +222,7 @@ std::vector<std::pair<double, double>> ConfigReader::windows(const std::string& 
   const toml::array* list = node->as_array();
   const auto fail = [&] {
     return ConfigError{fmt::format("{} = {} is not allowed: expected a list of windows [[low, high], ...] with "
-                                   "0 <= low < high, both finite", path, show_node(*node))};
+                                   "0 <= low < high, both finite", path, toml_value_text(*node))};
   };
   if (!list) throw fail();
   for (const toml::node& item : *list) {
@@ -248,7 +248,7 @@ std::optional<std::pair<int, int>> ConfigReader::int_pair(const std::string& pat
     if (a >= low && a <= high && b >= low && b <= high) return std::pair{static_cast<int>(a), static_cast<int>(b)};
   }
   throw ConfigError{fmt::format("{} = {} is not allowed: expected [nx, ny] with integers in [{}, {}]", path,
-                                show_node(*node), low, high)};
+                                toml_value_text(*node), low, high)};
 }
 
 void apply_override(toml::table& root, const std::string& assignment) {

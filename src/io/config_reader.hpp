@@ -69,6 +69,10 @@ class ConfigReader {
   const toml::table& root_;
 };
 
+// A value as the user wrote it, for messages: numbers in their shortest exact form ("0.8", not the
+// 17 digits toml++ prints), strings in double quotes, lists in brackets, a table as "a table".
+std::string toml_value_text(const toml::node& node);
+
 // Applies `--set section.key=value` (the value is one TOML value; a bare word is a string).
 void apply_override(toml::table& root, const std::string& assignment);
 
