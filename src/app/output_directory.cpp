@@ -113,14 +113,23 @@ std::string first_physics_override(const std::vector<std::string>& overrides, co
 }
 
 void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
-  // Measured peaks (granule bench, /usr/bin/time): the engine ~93 B per disk with the TC model,
-  // a lab-frame copy of the state for each output (32 B) and its file buffer (32 B), a checkpoint
-  // being written (~100 B), initial placement and free paths (≤ 64 B); per cell of a measurement
-  // grid ~40 doubles.
-  const auto n = static_cast<double>(config.system.particles);
+  // Measured peaks (granule bench, /usr/bin/time, heaptrack; docs/performance.md): the engine
+  // ~95 B per disk and ~111 per sphere, +8 with the TC model, +16 polydisperse, +8 (+24) for
+  // spinning disks (spheres); beside it, at most the positions and cell binning of the flow
+  // classification (32 B per disk) or a block-read output; a 2D run of 10^7 disks with every
+  // default output peaked at 151 B per disk.  Per cell of a measurement grid ~40 doubles; per
+  // engine cell its list head.
+  const SystemParams& s = config.system;
+  const bool spheres = s.dimension == 3;
+  double per_particle = spheres ? 111.0 : 95.0;
+  if (s.tc_duration > 0.0) per_particle += 8.0;
+  if (!config.diameters.monodisperse()) per_particle += 16.0;
+  if (s.roughness.rough) per_particle += spheres ? 24.0 : 8.0;
+  per_particle += 48.0;  // the transients above, with a margin
+  const auto n = static_cast<double>(s.particles);
   const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
                              static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
-  const double needed = 320.0 * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
+  const double needed = per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
   const double available = available_bytes();
   if (available > 0.0 && needed > available) {
     throw CommandFailure{kExitOutOfMemory,
