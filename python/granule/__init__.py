@@ -13,7 +13,27 @@ Everything is computed by the same C++ libraries as the `granule` command (src/b
 src/driver, src/io, src/analysis, src/spectra and src/theory): a Simulation follows the
 trajectory `granule run` follows for the same configuration and seed, bit for bit.
 """
+from pathlib import Path
+
+from granule import _granule
 from granule._granule import ConfigError, Simulation, __version__, cell_fields, spectra, theory
 from granule.gsd_export import write_gsd
 
-__all__ = ["ConfigError", "Simulation", "cell_fields", "spectra", "theory", "write_gsd", "__version__"]
+__all__ = ["ConfigError", "Simulation", "cell_fields", "spectra", "theory", "run_directory", "write_gsd", "__version__"]
+
+
+def run_directory(config, out, overrides=()):
+    """A whole `granule run` of `config` (a TOML path or a dict) into the directory `out`.
+
+    It goes through the driver's RunSession, the library the command line uses: the same files
+    (config.toml, timeseries.csv, snapshots.h5, fields.h5, collision statistics, checkpoint.h5,
+    summary.json; not the picture configuration.png, which the command line draws), bit for bit
+    but for wall times, and `granule run --resume OUT` continues it.  `out` must be empty or
+    missing.  Ctrl-C stops the run after the current event, writes its checkpoint and outputs as
+    the command line does, and raises KeyboardInterrupt.  Returns summary.json as a dict.
+    """
+    out = Path(out)
+    if out.exists() and any(out.iterdir()):
+        raise FileExistsError(f"{out} holds files: a run directory must be empty")
+    out.mkdir(parents=True, exist_ok=True)
+    return _granule._run_directory(config if isinstance(config, dict) else str(config), str(out), list(overrides))

@@ -1,12 +1,10 @@
 #include "bindings/interactive_run.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 
-#include "boundary/shear_protocol.hpp"
+#include "bindings/new_run_state.hpp"
 #include "granule/version.hpp"
 #include "io/snapshot_file.hpp"
 
@@ -53,24 +51,9 @@ RunConfig load_run_config(const std::string& path, const std::vector<std::string
 
 template <int D>
 InteractiveRun<D>::InteractiveRun(const RunConfig& config) : config_(config) {
-  const CellGridChoice choice = choose_cell_grid(engine_grid_request(config));
-  if (!choice.grid) throw ConfigError(choice.error);
-  grid_ = *choice.grid;
-  // As `granule run`: until production starts the images move at the velocity
-  // of the initial profile, U(0) of the protocol, or 0 for the static gas of
-  // §4.3.
-  const double protocol_start = ShearProtocol(config.system.shear_velocity, config.system.shear_history).velocity(0.0);
-  ClockState clock;
-  clock.held_shear_velocity = config.initial_shear_profile ? protocol_start : 0.0;
-  InitialStateResult initial = make_initial_state(
-      config.system, config.initial_temperature, config.seed, config.placement, clock.held_shear_velocity,
-      particle_sizes(config), {config.initial_shear_profile, config.initial_rotational_temperature});
-  if (!initial.error.empty()) {
-    throw ConfigError(fmt::format("{} (system.{} = {:.4g})", initial.error,
-                                  config.system.dimension == 2 ? "area_fraction" : "packing_fraction",
-                                  config.packing_fraction));
-  }
-  sim_ = std::make_unique<Simulation<D>>(elastic_prerun(config.system), grid_, initial.state, clock);
+  NewRunState start = new_run_state(config);
+  grid_ = start.grid;
+  sim_ = std::make_unique<Simulation<D>>(elastic_prerun(config.system), grid_, start.particles, start.clock);
   equilibrate_collisions_ = std::llround(config.equilibrate * static_cast<double>(config.system.particles));
 }
 

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_granule, m) {
   granule::bindings::bind_simulation(m);
   granule::bindings::bind_analysis(m);
   granule::bindings::bind_theory(m);
+  granule::bindings::bind_run_directory(m);
 }

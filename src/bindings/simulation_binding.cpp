@@ -23,17 +23,10 @@ bool no_pending_signal() {
   return PyErr_CheckSignals() == 0;
 }
 
-RunConfig configuration(const py::object& config, const std::vector<std::string>& overrides) {
-  if (py::isinstance<py::dict>(config))
-    return parse_run_config(toml_text_from_dict(config.cast<py::dict>()), overrides);
-  const std::string path = py::str(config).cast<std::string>();  // a str or a pathlib.Path
-  return load_run_config(path, overrides);
-}
-
 class PySimulation {
  public:
   PySimulation(const py::object& config, const std::vector<std::string>& overrides) {
-    const RunConfig parsed = configuration(config, overrides);
+    const RunConfig parsed = run_config_from_python(config, overrides);
     if (parsed.system.dimension == 3) {
       run_ = std::make_unique<InteractiveRun<3>>(parsed);
     } else {

@@ -54,4 +54,10 @@ std::string toml_text_from_dict(const py::dict& config) {
   return text.str();
 }
 
+RunConfig run_config_from_python(const py::object& config, const std::vector<std::string>& overrides) {
+  if (py::isinstance<py::dict>(config))
+    return parse_run_config(toml_text_from_dict(config.cast<py::dict>()), overrides);
+  return load_run_config(py::str(config).cast<std::string>(), overrides);
+}
+
 }  // namespace granule::bindings

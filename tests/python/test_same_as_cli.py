@@ -1,6 +1,7 @@
 """A granule.Simulation follows the trajectory of `granule run` for the same configuration and seed,
 bit for bit, however its run is split; and write_snapshot writes frames the CLI's readers take."""
 import csv
+import json
 
 import h5py
 import numpy as np
@@ -71,7 +72,6 @@ def test_time_series_of_one_run_equals_timeseries_csv(tmp_path, granule_cli, sma
     for name in ("t", "c", "temperature", "kinetic_energy", "pressure_collisional", "collision_rate"):
         assert np.allclose(series[name], [float(row[name]) for row in rows], rtol=1e-11, atol=1e-300), name
     summary = sim.summary()
-    import json
     cli_summary = json.loads((out / "summary.json").read_text())
     for key in ("collisions", "events", "t", "c", "stop_reason", "particles", "diameter"):
         assert summary[key] == cli_summary[key], key
@@ -89,3 +89,27 @@ def test_write_snapshot_appends_frames_the_cli_reads(tmp_path, granule_cli, smal
         assert f["collisions_per_particle"][1] == 2.0
     result = granule_cli("analyze", "fields", path, "--cells", "5,5", "--out", tmp_path / "fields.h5")
     assert result.returncode == 0, result.stderr
+
+
+def test_run_directory_writes_the_files_of_granule_run(tmp_path, granule_cli, small_config):
+    config = merged(small_config, {"collisions": {"free_paths": True}})
+    summary = granule.run_directory(config, tmp_path / "py")
+    cli = cli_run(granule_cli, tmp_path, granule.Simulation(config))
+    assert summary["c"] == 5.0 and summary["stop_reason"] == "collisions reached"
+    assert (tmp_path / "py" / "config.toml").read_text() == (cli / "config.toml").read_text()
+    assert (tmp_path / "py" / "timeseries.csv").read_bytes() == (cli / "timeseries.csv").read_bytes()
+    for name, datasets in (("snapshots.h5", ("positions", "velocities", "time")),
+                           ("fields.h5", ("instant/temperature", "average/pressure_collisional")),
+                           ("collisions.h5", None)):
+        with h5py.File(tmp_path / "py" / name) as ours, h5py.File(cli / name) as theirs:
+            names = list(datasets or [])
+            if not names:  # every dataset of the file
+                theirs.visititems(lambda key, item: names.append(key) if isinstance(item, h5py.Dataset) else None)
+            assert names
+            for dataset in names:
+                assert np.array_equal(ours[dataset][()], theirs[dataset][()]), (name, dataset)
+    # The command line continues it from its checkpoint.
+    resumed = granule_cli("run", "--resume", tmp_path / "py", "--set", "run.until_collisions_per_particle=7")
+    assert resumed.returncode == 0, resumed.stderr
+    with pytest.raises(FileExistsError):
+        granule.run_directory(config, tmp_path / "py")

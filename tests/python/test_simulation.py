@@ -1,10 +1,12 @@
 """granule.Simulation: construction from a dict or a TOML file, configuration errors with the
 command line's messages, runs, state arrays and their invariants."""
+import json
 import os
 import signal
 import subprocess
 import sys
 import textwrap
+import time
 
 import numpy as np
 import pytest
@@ -116,9 +118,21 @@ def test_spheres_mixtures_and_rough_grains_expose_their_arrays():
     assert np.abs(rough.spins).max() > 0
 
 
+def interrupted(body, seconds=1.0):
+    """Runs `body` (Python source that prints "ready" before its long run and its result after
+    catching KeyboardInterrupt), sends SIGINT `seconds` after "ready"; returns its output."""
+    script = "import sys, granule\n" + textwrap.dedent(body)
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, env=os.environ)
+    assert process.stdout.readline().strip() == "ready"
+    time.sleep(seconds)
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=60)
+    assert process.returncode == 0, out
+    return out
+
+
 def test_ctrl_c_stops_a_run_cleanly_and_it_can_go_on():
-    script = textwrap.dedent("""
-        import sys, granule
+    out = interrupted("""
         sim = granule.Simulation({"system": {"particles": 20000, "restitution": 0.99}})
         print("ready", flush=True)
         try:
@@ -130,12 +144,26 @@ def test_ctrl_c_stops_a_run_cleanly_and_it_can_go_on():
             sys.exit(0)
         sys.exit(1)
     """)
-    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, env=os.environ)
-    assert process.stdout.readline().strip() == "ready"
-    import time
-    time.sleep(1.0)
-    process.send_signal(signal.SIGINT)
-    out, _ = process.communicate(timeout=60)
-    assert process.returncode == 0, out
     words = out.split()
     assert words[0] == "interrupted" and 0 < float(words[1]) < 1e6 and float(words[2]) >= float(words[1]) + 0.1
+
+
+def test_ctrl_c_stops_a_run_directory_with_its_checkpoint(tmp_path, granule_cli):
+    out = tmp_path / "run"
+    text = interrupted(f"""
+        print("ready", flush=True)
+        try:
+            granule.run_directory({{"system": {{"particles": 20000, "restitution": 0.99}},
+                                   "run": {{"until_collisions_per_particle": 1e6}}}}, {str(out)!r})
+        except KeyboardInterrupt:
+            print("interrupted", flush=True)
+            sys.exit(0)
+        sys.exit(1)
+    """, seconds=1.5)
+    assert text.strip() == "interrupted"
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["stop_reason"] == "interrupted" and summary["c"] > 0
+    end = summary["c"] + 0.5
+    resumed = granule_cli("run", "--resume", out, "--set", f"run.until_collisions_per_particle={end}")
+    assert resumed.returncode == 0, resumed.stderr
+    assert json.loads((out / "summary.json").read_text())["c"] == pytest.approx(end, abs=1e-4)
