@@ -75,7 +75,12 @@ void CellMoments::restore(const StateArchive& archive, const std::string& prefix
   }
 }
 
-void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile) {
+void CellMoments::add(const StateBlocks& blocks, const ShearFrame& frame, bool subtract_shear_profile) {
+  blocks.for_each([&](const ParticleState& state, std::size_t) { add_particles(state, frame, subtract_shear_profile); });
+  ++configurations;
+}
+
+void CellMoments::add_particles(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile) {
   const int d = grid.dimension;
   if (state.dimension != d) {
     throw std::invalid_argument("a " + std::to_string(state.dimension) + "D configuration on a " + std::to_string(d) + "D field grid");
@@ -107,7 +112,6 @@ void CellMoments::add(const ParticleState& state, const ShearFrame& frame, bool 
     }
     if (with_spin) add_spin(state, i, c);
   }
-  ++configurations;
 }
 
 void CellMoments::start_spin_moments() {

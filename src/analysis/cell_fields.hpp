@@ -23,6 +23,7 @@
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/state_archive.hpp"
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -60,7 +61,7 @@ struct CellMoments {
   // Add one configuration (of the grid's dimension).  With `subtract_shear_profile`, each
   // particle's velocity is taken relative to the mean Lees–Edwards flow u(y) = γ (y − L_y/2) of
   // `frame` before it is summed.
-  void add(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile);
+  void add(const StateBlocks& state, const ShearFrame& frame, bool subtract_shear_profile);
   void save(StateArchive& archive, const std::string& prefix) const;
   void restore(const StateArchive& archive, const std::string& prefix);
 
@@ -75,6 +76,8 @@ struct CellMoments {
  private:
   void start_spin_moments();
   void add_spin(const ParticleState& state, std::size_t i, std::size_t c);
+  // The particles of one block of a configuration (add counts the configuration once).
+  void add_particles(const ParticleState& state, const ShearFrame& frame, bool subtract_shear_profile);
 };
 
 // The axes about which grains of dimension d spin: z alone for disks, x, y, z for spheres.

@@ -8,6 +8,7 @@
 #include "analysis/field_grid.hpp"
 #include "engine/state_archive.hpp"
 #include "geometry/vec.hpp"
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -26,11 +27,13 @@ class LocalDensity {
  public:
   explicit LocalDensity(const FieldGrid& grid) : grid_(grid), density_(grid.cells(), 0.0) {}
   // A configuration of the grid's dimension.
-  void update(const ParticleState& state) {
+  void update(const StateBlocks& state) {
     std::fill(density_.begin(), density_.end(), 0.0);
-    for (std::size_t i = 0; i < state.size(); ++i) {
-      density_[grid_.dimension == 3 ? grid_.index(state.x[i], state.y[i], state.z[i]) : grid_.index(state.x[i], state.y[i])] += 1.0;
-    }
+    state.for_each([&](const ParticleState& s, std::size_t) {
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        density_[grid_.dimension == 3 ? grid_.index(s.x[i], s.y[i], s.z[i]) : grid_.index(s.x[i], s.y[i])] += 1.0;
+      }
+    });
     for (double& d : density_) d /= grid_.cell_volume();
   }
   double at(double x, double y) const { return density_[grid_.index(x, y)]; }

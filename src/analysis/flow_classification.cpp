@@ -123,19 +123,26 @@ double largest_cluster_mass_fraction(const std::vector<std::int32_t>& labels) {
   return static_cast<double>(*std::max_element(size.begin(), size.end())) / static_cast<double>(labels.size());
 }
 
-FlowClassification classify_flow(const ParticleState& s, const ShearFrame& frame, double shear_offset, double diameter,
+FlowClassification classify_flow(const StateBlocks& state, const ShearFrame& frame, double shear_offset, double diameter,
                                  const FlowClassificationSettings& settings) {
   FlowClassification out;
-  const std::size_t n = s.size();
+  const std::size_t n = state.size();
   if (n == 0) return out;
   // Streamwise profiles over `rows` rows: ρ(y) = count / row area, V_x(y) = Σ v_x / count.
   const auto rows = static_cast<std::size_t>(settings.rows);
   std::vector<double> count(rows, 0.0), momentum_x(rows, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto r = static_cast<std::size_t>(std::clamp(static_cast<int>(s.y[i] / frame.length_y * settings.rows), 0, settings.rows - 1));
-    count[r] += 1.0;
-    momentum_x[r] += s.vx[i];
-  }
+  ParticleState positions;
+  positions.x.reserve(n);
+  positions.y.reserve(n);
+  state.for_each([&](const ParticleState& s, std::size_t) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const auto r = static_cast<std::size_t>(std::clamp(static_cast<int>(s.y[i] / frame.length_y * settings.rows), 0, settings.rows - 1));
+      count[r] += 1.0;
+      momentum_x[r] += s.vx[i];
+    }
+    positions.x.insert(positions.x.end(), s.x.begin(), s.x.end());
+    positions.y.insert(positions.y.end(), s.y.begin(), s.y.end());
+  });
   const double mean = static_cast<double>(n) / static_cast<double>(rows);  // ρ(y)/ρ̄ = count / mean
   const auto [lowest, highest] = std::minmax_element(count.begin(), count.end());
   out.density_contrast = (*highest - *lowest) / mean;
@@ -151,9 +158,9 @@ FlowClassification classify_flow(const ParticleState& s, const ShearFrame& frame
   out.density_rms_deviation = std::sqrt(deviation2 / static_cast<double>(rows));
   const double velocity_unit = frame.sheared() ? std::abs(frame.shear_velocity) : 1.0;
   out.velocity_profile_deviation = std::sqrt(velocity2 / occupied) / velocity_unit;
-  out.densest_band_mass_fraction = densest_band_mass_fraction(s.y, frame.length_y, settings.band_fraction * frame.length_y);
-  out.largest_cluster_mass_fraction =
-      largest_cluster_mass_fraction(cluster_labels(s, frame.length_x, frame.length_y, shear_offset, (1.0 + settings.cluster_gap) * diameter));
+  out.densest_band_mass_fraction = densest_band_mass_fraction(positions.y, frame.length_y, settings.band_fraction * frame.length_y);
+  out.largest_cluster_mass_fraction = largest_cluster_mass_fraction(
+      cluster_labels(positions, frame.length_x, frame.length_y, shear_offset, (1.0 + settings.cluster_gap) * diameter));
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "boundary/shear_frame.hpp"
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -50,8 +51,9 @@ std::vector<std::int32_t> cluster_labels(const ParticleState& state, double leng
 // The mass fraction of the largest cluster (unit mass: its share of the disks).
 double largest_cluster_mass_fraction(const std::vector<std::int32_t>& labels);
 
-// All of the above for a configuration; `frame` carries U at the configuration's time.
-FlowClassification classify_flow(const ParticleState& state, const ShearFrame& frame, double shear_offset, double diameter,
+// All of the above for a configuration; `frame` carries U at the configuration's time.  Of the
+// state it keeps only the positions (16 bytes per disk: the clusters need them all at once).
+FlowClassification classify_flow(const StateBlocks& state, const ShearFrame& frame, double shear_offset, double diameter,
                                  const FlowClassificationSettings& settings);
 
 }  // namespace granule

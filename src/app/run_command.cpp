@@ -270,12 +270,12 @@ double mean_free_time(const RunSession<D>& session) {
 }
 
 template <int D>
-void report_collapse(const RunSession<D>& session, const std::string& out) {
+std::string collapse_report(const RunSession<D>& session, const std::string& out) {
   const Simulation<D>& sim = session.simulation();
   const CollapseReport& c = sim.collapse();
   const double free_time = mean_free_time(session);
   const std::int64_t frames = session.snapshot_frames();
-  fmt::print(stderr,
+  return fmt::format(
              "granule run: stopped by inelastic collapse at t = {:.9g} (c = {:.6g}): particles {} and {} near ({:.4g}, {:.4g}, {:.4g})"
              " collided ever faster until the clock stopped advancing (McNamara & Young 1994).\n"
              "  The collapsing state is saved in {}/snapshots.h5 (frame {}).  The TC model (Luding & McNamara 1998) avoids\n"
@@ -298,25 +298,30 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
     print_header(config);
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
+    const Simulation<D>& sim = session->simulation();
+    const auto prerun = summary["prerun_collisions_this_invocation"].get<std::int64_t>();
+    const std::string finished =
+        fmt::format("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions{} in {:.3g} s ({:.3g} collisions/s)\n",
+                    reason == StopReason::kInterrupted ? "stopped" : "finished", stop_text(reason), sim.time(),
+                    sim.collisions_per_particle(), sim.collisions(),
+                    prerun > 0 ? fmt::format(" (+ {} in the elastic pre-run)", prerun) : std::string{},
+                    summary["wall_seconds"].get<double>(), summary["collisions_per_second"].get<double>());
+    const std::int64_t frames = session->snapshot_frames();
+    const std::string outputs =
+        fmt::format("outputs in {}: config.toml, checkpoint.h5, summary.json{}\n", out,
+                    frames > 0 ? fmt::format(", timeseries.csv, snapshots.h5 ({} frames){}", frames,
+                                             session->measurements_enabled() ? ", fields.h5 and collision statistics as configured" : "")
+                               : std::string{});
+    const std::string collapse = reason == StopReason::kInelasticCollapse ? collapse_report(*session, out) : std::string{};
+    session.reset();  // the picture reads the last frame back: of 10^8 disks, not beside the engine
     try {
-      if (session->snapshot_frames() > 0) fmt::print("picture: {}\n", render_run_picture(out));
+      if (frames > 0) fmt::print("picture: {}\n", render_run_picture(out));
     } catch (const IoError&) {
       throw;  // the disk failed: exit 4, the data files written before stay complete
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }
-    const Simulation<D>& sim = session->simulation();
-    const auto prerun = summary["prerun_collisions_this_invocation"].get<std::int64_t>();
-    fmt::print("{} ({}): t = {:.6g}, c = {:.6g}, {} collisions{} in {:.3g} s ({:.3g} collisions/s)\n",
-               reason == StopReason::kInterrupted ? "stopped" : "finished", stop_text(reason), sim.time(),
-               sim.collisions_per_particle(), sim.collisions(),
-               prerun > 0 ? fmt::format(" (+ {} in the elastic pre-run)", prerun) : std::string{},
-               summary["wall_seconds"].get<double>(), summary["collisions_per_second"].get<double>());
-    fmt::print("outputs in {}: config.toml, checkpoint.h5, summary.json{}\n", out,
-               session->snapshot_frames() > 0
-                   ? fmt::format(", timeseries.csv, snapshots.h5 ({} frames){}", session->snapshot_frames(),
-                                 session->measurements_enabled() ? ", fields.h5 and collision statistics as configured" : "")
-                   : std::string{});
+    fmt::print("{}{}", finished, outputs);
     if (reason == StopReason::kInterrupted) {
       const int signal = InterruptSignals::received();
       fmt::print(stderr, "granule run: interrupted by signal {}: checkpoint written; continue with\n  granule run --resume {}\n",
@@ -324,7 +329,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
       return kExitInterruptedBase + signal;
     }
     if (reason == StopReason::kInelasticCollapse) {
-      report_collapse(*session, out);
+      fmt::print(stderr, "{}", collapse);
       return kExitCollapse;
     }
     return kExitSuccess;

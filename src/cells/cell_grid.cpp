@@ -76,7 +76,7 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
   return {grid, {}};
 }
 
-void CellLists::save(StateArchive& archive, const std::string& prefix) const { archive.put(prefix + "head", head_); }
+void CellLists::save(StateArchive& archive, const std::string& prefix) const { archive.put_view(prefix + "head", head_); }
 
 void CellLists::restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells,
                         const std::vector<std::int32_t>& links) {

@@ -78,7 +78,7 @@ void RunMeasurements<D>::start(Simulation<D>& sim) {
     write_fields_frame(sim);
   }
   if (density_) {
-    density_->update(sim.state());
+    density_->update(sim.state_blocks());
     after_step(sim, false);
   }
 }
@@ -95,7 +95,7 @@ void RunMeasurements<D>::continue_from_frame(Simulation<D>& sim, std::int64_t fi
     if (frame_written) last_fields_collisions_ = sim.collisions();
   }
   if (density_) {
-    density_->update(sim.state());
+    density_->update(sim.state_blocks());
     after_step(sim, false);
   }
 }
@@ -174,10 +174,10 @@ void RunMeasurements<D>::after_step(Simulation<D>& sim, bool final) {
     if (paths_) paths_->start();
     windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
     windows_.start(config_.system.particles, sim.collisions());
-    density_->update(sim.state());
+    density_->update(sim.state_blocks());
   } else if (statistics_started_ && windows_.due(sim)) {
     // Classify the next window's collisions by the density at its start.
-    density_->update(sim.state());
+    density_->update(sim.state_blocks());
     windows_.advance(sim);
   }
   if (fields_writer_ && (fields_schedule_.due(sim) || final)) {
@@ -189,7 +189,7 @@ void RunMeasurements<D>::after_step(Simulation<D>& sim, bool final) {
 }
 
 template <int D>
-void RunMeasurements<D>::on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity) {
+void RunMeasurements<D>::on_sample(const StateBlocks& state, std::int64_t collisions, double shear_velocity) {
   if (!interval_moments_) return;
   frame_.shear_velocity = shear_velocity;  // the profile u(y) subtracted is that of U now
   interval_moments_->add(state, frame_, config_.fields.subtract_shear_profile);
@@ -199,7 +199,7 @@ void RunMeasurements<D>::on_sample(const ParticleState& state, std::int64_t coll
 template <int D>
 void RunMeasurements<D>::write_fields_frame(const Simulation<D>& sim) {
   const bool subtract = config_.fields.subtract_shear_profile;
-  const ParticleState state = sim.state();
+  const StateBlocks state = sim.state_blocks();
   frame_.shear_velocity = sim.image_velocity();
   CellMoments instant(grid_, spin_inertia(config_.system));
   instant.add(state, frame_, subtract);

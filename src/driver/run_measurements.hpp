@@ -46,7 +46,7 @@ class RunMeasurements final : public StopClient<D> {
   void after_step(Simulation<D>& sim, bool final);
   // A configuration sampled by the run (output.every_*), the images moving at `shear_velocity`:
   // added to the fields' interval average.
-  void on_sample(const ParticleState& state, std::int64_t collisions, double shear_velocity);
+  void on_sample(const StateBlocks& state, std::int64_t collisions, double shear_velocity);
   // Write collisions.h5 and close fields.h5.  Returns the summary figures for summary.json.
   nlohmann::json finish(const Simulation<D>& sim);
 

@@ -87,7 +87,7 @@ void RunSession<D>::start_production() {
   diagnostics_ = std::make_unique<GlobalDiagnostics<D>>(system, diagnostics_grid(config_));
   sim_->add_observer(diagnostics_.get());
   diagnostics_->restart_interval(sim_->time(), sim_->collisions());
-  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
+  samples_.push_back(diagnostics_->sample(sim_->state_blocks(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
                                           sim_->shear_offset()));
   SnapshotMetadata metadata;
   metadata.system = system;
@@ -95,9 +95,8 @@ void RunSession<D>::start_production() {
   metadata.boundary = boundary_kind_name(config_);
   metadata.seed = config_.seed;
   metadata.version = kVersion;
-  const ParticleState now = sim_->state();
-  metadata.diameters = now.diameter;
-  metadata.masses = now.mass;
+  metadata.diameters = sim_->diameters();
+  metadata.masses = sim_->masses();
   snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", metadata);
   append_snapshot();
   measurements_ = std::make_unique<RunMeasurements<D>>(config_, out_);
@@ -165,7 +164,7 @@ void RunSession<D>::save(StateArchive& archive) const {
 
 template <int D>
 void RunSession<D>::write_checkpoint() {
-  StateArchive archive;
+  StateArchive archive = StateArchive::streaming();  // written at once, before the run moves on
   save(archive);
   if (in_production()) write_timeseries();  // the rows on disk include every row of the checkpoint
   granule::write_checkpoint(out_ + "/checkpoint.h5", archive, kVersion);
@@ -175,13 +174,15 @@ void RunSession<D>::write_checkpoint() {
 template <int D>
 void RunSession<D>::append_snapshot() {
   last_snapshot_events_ = sim_->events();
-  snapshots_->append({sim_->state(), sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(),
-                      sim_->strain(), sim_->image_velocity()});
+  // Written block by block from the engine: no copy of the whole state beside it (10^8 disks).
+  snapshots_->append({{}, sim_->clock_state(), sim_->collisions_per_particle(), sim_->shear_offset(), sim_->strain(),
+                      sim_->image_velocity()},
+                     sim_->state_blocks());
 }
 
 template <int D>
 void RunSession<D>::take_sample() {
-  const ParticleState state = sim_->state();
+  const StateBlocks state = sim_->state_blocks();
   samples_.push_back(
       diagnostics_->sample(state, sim_->time(), sim_->collisions(), sim_->image_velocity(), sim_->shear_offset()));
   measurements_->on_sample(state, sim_->collisions(), sim_->image_velocity());

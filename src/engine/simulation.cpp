@@ -210,16 +210,23 @@ void Simulation<D>::load(const ParticleState& state) {
 
 template <int D>
 ParticleState Simulation<D>::state() const {
+  return state(0, particles_.size());
+}
+
+template <int D>
+ParticleState Simulation<D>::state(std::size_t first, std::size_t count) const {
   ParticleState out;
   out.dimension = D;
-  out.diameter = diameter_;
-  out.mass = mass_;
-  for (int k = 0; k < kSpinComponents && params_.roughness.rough; ++k) out.spin(k) = spin_[static_cast<std::size_t>(k)];
-  out.resize(static_cast<std::size_t>(params_.particles));
+  const auto part = [&](const std::vector<double>& all) { return entries_of(all, first, count); };
+  out.diameter = part(diameter_);
+  out.mass = part(mass_);
+  for (int k = 0; k < kSpinComponents && params_.roughness.rough; ++k) out.spin(k) = part(spin_[static_cast<std::size_t>(k)]);
+  out.resize(count);
   const double s = strain();
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const Vector r = position_now(static_cast<std::int32_t>(i));
-    const Vector v = velocity_now(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto id = static_cast<std::int32_t>(first + i);
+    const Vector r = position_now(id);
+    const Vector v = velocity_now(id);
     for (int a = 0; a < D; ++a) {
       out.position(a)[i] = r[a];
       out.velocity(a)[i] = v[a];

@@ -24,6 +24,7 @@
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
 #include "engine/state_archive.hpp"
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
 #include "events/event_queue.hpp"
@@ -83,7 +84,16 @@ class Simulation {
   // extrapolated from each particle's last event without touching the engine; with the
   // per-particle diameters and masses of a polydisperse run.
   ParticleState state() const;
+  // Particles first .. first + count - 1 of state() (a large state written block by block).
+  ParticleState state(std::size_t first, std::size_t count) const;
+  // state() in blocks, each extrapolated when it is read: valid while the engine stands still.
+  StateBlocks state_blocks() const {
+    return StateBlocks(particles_.size(), [this](std::size_t first, std::size_t count) { return state(first, count); });
+  }
   ClockState clock_state() const;
+  // Per-particle diameters and masses of a polydisperse run (empty otherwise).
+  const std::vector<double>& diameters() const { return diameter_; }
+  const std::vector<double>& masses() const { return mass_; }
 
   // Switch on the restitutions of `production` (normal, tangential, walls: the thesis's elastic
   // pre-run ends here), restart t and c at 0 and start the shear protocol: from here on U follows
@@ -334,8 +344,17 @@ template <typename Visit>
 void Simulation<D>::for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
   const std::array<int, D> cell = cell_coordinates(cell_[static_cast<std::size_t>(i)]);
   const double s = strain();
-  // Layers (z, 3D only) outermost, then rows (y), then columns (x): the order decides which of
-  // two partners at equal times is taken, so it is the 2D engine's order.
+  // The cells within reach with their images, in visiting order: layers (z, 3D only) outermost,
+  // then rows (y), then columns (x).  The order decides which of two partners at equal times is
+  // taken, so it is the 2D engine's order.
+  struct CellVisit {
+    std::int32_t first;  // head of its list
+    Vector shift;        // position of the image its particles are seen at
+    double shift_vx;     // and the velocity of that image along x
+  };
+  constexpr int kStencil = D == 3 ? 27 : 9;
+  std::array<CellVisit, kStencil> cells;
+  int visits = 0;
   const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
   const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
   for (int dl = lowest_layer; dl <= highest_layer; ++dl) {
@@ -374,11 +393,19 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, const Reach& reach, Visit
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];
         }
-        const std::int32_t neighbour = grid_.index(c, r, layer);
-        for (std::int32_t j = lists_.first(neighbour); j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
-          if (j != i) visit(j, shift, row_shift.velocity_x);
-        }
+        // The head of every cell is read, and its first record prefetched, before any list is
+        // followed: the lists are chains through the records, and read one after the other their
+        // cache misses would not overlap (without a branch, which an empty cell would mispredict).
+        const std::int32_t head = lists_.first(grid_.index(c, r, layer));
+        __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
+        cells[visits++] = {head, shift, row_shift.velocity_x};
       }
+    }
+  }
+  for (int k = 0; k < visits; ++k) {
+    const CellVisit& v = cells[static_cast<std::size_t>(k)];
+    for (std::int32_t j = v.first; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
+      if (j != i) visit(j, v.shift, v.shift_vx);
     }
   }
 }

@@ -178,17 +178,18 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
     } else if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::int64_t>) {
       archive.put_integer(prefix + name, value);
     } else {
-      archive.put(prefix + name, value);
+      archive.put_view(prefix + name, value);
     }
   });
   visit_record_fields<D>([&](const char* name, auto field) {
-    std::vector<std::decay_t<decltype(field(particles_[0]))>> values(particles_.size());
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = field(particles_[i]);
-    archive.put(prefix + name, std::move(values));
+    using Value = std::decay_t<decltype(field(particles_[0]))>;
+    archive.put_generated<Value>(prefix + name, particles_.size(), [this, field](std::size_t first, std::span<Value> out) {
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] = field(particles_[first + k]);
+    });
   });
-  std::vector<std::uint8_t> kinds(kind_.size());
-  for (std::size_t i = 0; i < kinds.size(); ++i) kinds[i] = static_cast<std::uint8_t>(kind_[i]);
-  archive.put(prefix + "event_kind", std::move(kinds));
+  archive.put_generated<std::uint8_t>(prefix + "event_kind", kind_.size(), [this](std::size_t first, std::span<std::uint8_t> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(kind_[first + k]);
+  });
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
   lists_.save(archive, prefix + "cell_list_");

@@ -3,8 +3,11 @@
 // data, no I/O: io/checkpoint_file.hpp writes an archive to HDF5 and reads it back.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -16,10 +19,50 @@ class StateArchive {
  public:
   using Array = std::variant<std::vector<double>, std::vector<std::int64_t>, std::vector<std::int32_t>,
                              std::vector<std::uint32_t>, std::vector<std::uint8_t>>;
+  // An array not copied into the archive: `fill(first, out)` writes its entries first, first + 1, ...
+  // into `out`, block by block, when the archive is written.
+  template <typename T>
+  struct Producer {
+    std::size_t size = 0;
+    std::function<void(std::size_t first, std::span<T> out)> fill;
+  };
+  using DeferredArray = std::variant<Producer<double>, Producer<std::int64_t>, Producer<std::int32_t>,
+                                     Producer<std::uint32_t>, Producer<std::uint8_t>>;
+
+  StateArchive() = default;
+  // An archive that keeps the large arrays (one entry per particle or per cell) as views of the
+  // saved objects' own memory instead of copies, so that the checkpoint of 10^8 disks needs no
+  // second copy of the state: it must be written (io/checkpoint_file.hpp) before any saved object
+  // changes, and its large entries cannot be read back.
+  static StateArchive streaming() {
+    StateArchive archive;
+    archive.streaming_ = true;
+    return archive;
+  }
 
   template <typename T>
   void put(const std::string& name, std::vector<T> values) {
+    deferred_.erase(name);
     arrays_[name] = std::move(values);
+  }
+  // A large array that the caller keeps unchanged until the archive is written (see streaming()).
+  template <typename T>
+  void put_view(const std::string& name, const std::vector<T>& values) {
+    put_generated<T>(name, values.size(), [&values](std::size_t first, std::span<T> out) {
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+    });
+  }
+  // A large array computed entry by entry (a field of the particle records, say).
+  template <typename T, typename Fill>
+  void put_generated(const std::string& name, std::size_t size, Fill fill) {
+    if (!streaming_) {
+      std::vector<T> values(size);
+      fill(std::size_t{0}, std::span<T>(values));
+      put(name, std::move(values));
+      return;
+    }
+    arrays_.erase(name);
+    deferred_[name] = Producer<T>{size, std::move(fill)};
   }
   void put_scalar(const std::string& name, double value) { put(name, std::vector<double>{value}); }
   void put_integer(const std::string& name, std::int64_t value) { put(name, std::vector<std::int64_t>{value}); }
@@ -34,6 +77,7 @@ class StateArchive {
   // Throws std::runtime_error naming the entry when it is missing or of another type.
   template <typename T>
   const std::vector<T>& get(const std::string& name) const {
+    if (deferred_.count(name) > 0) throw std::logic_error("the streamed checkpoint entry " + name + " cannot be read");
     const auto found = arrays_.find(name);
     if (found == arrays_.end()) throw std::runtime_error("checkpoint has no entry " + name);
     const auto* values = std::get_if<std::vector<T>>(&found->second);
@@ -42,7 +86,7 @@ class StateArchive {
   }
   double scalar(const std::string& name) const { return single(get<double>(name), name); }
   std::int64_t integer(const std::string& name) const { return single(get<std::int64_t>(name), name); }
-  bool contains(const std::string& name) const { return arrays_.count(name) > 0; }
+  bool contains(const std::string& name) const { return arrays_.count(name) > 0 || deferred_.count(name) > 0; }
   std::vector<std::vector<double>> rows(const std::string& name) const {
     const auto& flat = get<double>(name);
     const std::int64_t count = integer(name + "_rows");
@@ -67,6 +111,7 @@ class StateArchive {
 
   const std::map<std::string, Array>& arrays() const { return arrays_; }
   std::map<std::string, Array>& arrays() { return arrays_; }
+  const std::map<std::string, DeferredArray>& deferred() const { return deferred_; }
 
  private:
   template <typename T>
@@ -75,6 +120,8 @@ class StateArchive {
     return values[0];
   }
   std::map<std::string, Array> arrays_;
+  std::map<std::string, DeferredArray> deferred_;
+  bool streaming_ = false;
 };
 
 }  // namespace granule

@@ -74,6 +74,14 @@ inline SystemParams elastic_prerun(SystemParams params) {
   return params;
 }
 
+// Entries first .. first + count - 1 of a per-particle array, or nothing when it is empty (an
+// optional array: the diameters of a monodisperse system, the spins of smooth grains).
+inline std::vector<double> entries_of(const std::vector<double>& all, std::size_t first, std::size_t count) {
+  if (all.empty()) return {};
+  const auto begin = all.begin() + static_cast<std::ptrdiff_t>(first);
+  return std::vector<double>(begin, begin + static_cast<std::ptrdiff_t>(count));
+}
+
 // Positions and velocities in the lab frame, one entry per particle: the exchange format between
 // the engine, initial states, files and analyses (which take the dimension at run time).
 // z and vz are empty in 2D; diameter and mass are empty for a monodisperse system (all σ =
@@ -112,6 +120,12 @@ struct ParticleState {
     if (rough()) {
       for (int k = 0; k < spin_components(); ++k) spin(k).resize(n);
     }
+  }
+  // Particles first .. first + count - 1 (a block of a large state written piece by piece).
+  ParticleState slice(std::size_t first, std::size_t count) const {
+    const auto part = [&](const std::vector<double>& all) { return entries_of(all, first, count); };
+    return ParticleState{dimension,     part(x),    part(y),    part(z),    part(vx), part(vy),
+                         part(vz),      part(diameter), part(mass), part(wx), part(wy), part(wz)};
   }
   std::vector<double>& position(int axis) { return axis == 0 ? x : (axis == 1 ? y : z); }
   const std::vector<double>& position(int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }

@@ -224,7 +224,7 @@ void EventQueue::shift_times(double delta) {
   rebuild();
 }
 
-void EventQueue::save(StateArchive& archive, const std::string& prefix) const { archive.put(prefix + "time", time_); }
+void EventQueue::save(StateArchive& archive, const std::string& prefix) const { archive.put_view(prefix + "time", time_); }
 
 void EventQueue::restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles) {
   const auto& times = archive.get<double>(prefix + "time");

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <hdf5.h>
 
+#include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <type_traits>
 
@@ -31,17 +33,44 @@ hid_t file_type() {
 }
 
 template <typename T>
-void write_entry(hid_t file, const std::string& name, const std::vector<T>& values) {
-  const hsize_t size = values.size();
+Handle create_entry(hid_t file, const std::string& name, hsize_t size) {
   const Handle space = owned(H5Screate_simple(1, &size, nullptr), H5Sclose, file, "create the shape of", name.c_str());
   const Handle links = owned(H5Pcreate(H5P_LINK_CREATE), H5Pclose, file, "create link properties of", name.c_str());
   check(H5Pset_create_intermediate_group(links.get(), 1), file, "set link properties of", name.c_str());
   const Handle creation = untimed_creation_properties(H5P_DATASET_CREATE, file, name.c_str());
-  Handle dataset = owned(H5Dcreate2(file, name.c_str(), file_type<T>(), space.get(), links.get(), creation.get(), H5P_DEFAULT),
-                         H5Dclose, file, "create", name.c_str());
+  return owned(H5Dcreate2(file, name.c_str(), file_type<T>(), space.get(), links.get(), creation.get(), H5P_DEFAULT),
+               H5Dclose, file, "create", name.c_str());
+}
+
+template <typename T>
+void write_entry(hid_t file, const std::string& name, const std::vector<T>& values) {
+  Handle dataset = create_entry<T>(file, name, values.size());
   // The memory type is the file type: the archive's types are the little-endian fixed-size ones.
   if (!values.empty()) {
     check(H5Dwrite(dataset.get(), file_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), file, "write", name.c_str());
+  }
+  dataset.close();
+}
+
+// A streamed entry, through a buffer of at most kStreamBlock entries: the state of 10^8 disks is
+// written without a copy of it (StateArchive::streaming).
+template <typename T>
+void write_entry(hid_t file, const std::string& name, const StateArchive::Producer<T>& producer) {
+  constexpr std::size_t kStreamBlock = std::size_t{1} << 16;
+  Handle dataset = create_entry<T>(file, name, producer.size);
+  const hsize_t size = producer.size;
+  const Handle file_space = owned(H5Screate_simple(1, &size, nullptr), H5Sclose, file, "create the shape of", name.c_str());
+  std::vector<T> block(std::min(producer.size, kStreamBlock));
+  for (std::size_t first = 0; first < producer.size; first += block.size()) {
+    const std::size_t count = std::min(block.size(), producer.size - first);
+    producer.fill(first, std::span<T>(block.data(), count));
+    const hsize_t start = first;
+    const hsize_t length = count;
+    check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &start, nullptr, &length, nullptr), file, "select part of",
+          name.c_str());
+    const Handle memory_space = owned(H5Screate_simple(1, &length, nullptr), H5Sclose, file, "create the shape of", name.c_str());
+    check(H5Dwrite(dataset.get(), file_type<T>(), memory_space.get(), file_space.get(), H5P_DEFAULT, block.data()), file,
+          "write", name.c_str());
   }
   dataset.close();
 }
@@ -92,6 +121,9 @@ void write_checkpoint(const std::string& path, const StateArchive& archive, cons
   Handle file(create_partial_file(path, kFormat, kFormatVersion, granule_version), H5Fclose);
   for (const auto& [name, values] : archive.arrays()) {
     std::visit([&, &entry = name](const auto& v) { write_entry(file.get(), entry, v); }, values);
+  }
+  for (const auto& [name, producer] : archive.deferred()) {
+    std::visit([&, &entry = name](const auto& p) { write_entry(file.get(), entry, p); }, producer);
   }
   publish_partial_file(file.release(), path);
 }

@@ -258,6 +258,15 @@ hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_
     max.push_back(d);
     chunk.push_back(d);
   }
+  // A chunk holds at most kChunkEntries entries of a frame (1 MiB of doubles, HDF5's default chunk
+  // cache): a frame of 10^8 disks written block by block then needs no buffer of a whole frame
+  // inside HDF5, and no chunk reaches HDF5's limit of 4 GiB.
+  constexpr hsize_t kChunkEntries = hsize_t{1} << 17;
+  if (chunk.size() > 1) {
+    hsize_t per_row = 1;
+    for (std::size_t k = 2; k < chunk.size(); ++k) per_row *= chunk[k];
+    chunk[1] = std::clamp<hsize_t>(kChunkEntries / std::max<hsize_t>(per_row, 1), 1, std::max<hsize_t>(chunk[1], 1));
+  }
   Handle space = owned(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), H5Sclose, file,
                        "describe dataset", name);
   Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, file, name);
@@ -273,7 +282,8 @@ void add_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> r
   Handle(create_frames(file, name, type, std::move(row)), H5Dclose).close();
 }
 
-void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow) {
+void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow, hsize_t first_row,
+                    hsize_t rows) {
   Handle dataset = open_dataset(file, name);
   std::vector<hsize_t> dims = extent(dataset.get(), name);
   if (grow) {
@@ -286,6 +296,14 @@ void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_
   std::vector<hsize_t> start(dims.size(), 0), count = dims;
   start[0] = frame;
   count[0] = 1;
+  if (rows != kAllRows) {
+    if (dims.size() < 2 || first_row + rows > dims[1]) {
+      throw std::out_of_range("dataset " + std::string(name) + " has no rows " + std::to_string(first_row) + " + " +
+                              std::to_string(rows));
+    }
+    start[1] = first_row;
+    count[1] = rows;
+  }
   check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), file,
         "select a frame of", name);
   Handle memory = owned(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), H5Sclose, file,
@@ -309,6 +327,11 @@ std::vector<hsize_t> dataset_shape(hid_t location, const char* name) {
 
 void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
   transfer_frame(file, name, type, const_cast<void*>(data), frame, true);
+}
+
+void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
+                       hsize_t rows) {
+  transfer_frame(file, name, type, const_cast<void*>(data), frame, true, first_row, rows);
 }
 
 void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame) {

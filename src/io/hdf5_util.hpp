@@ -78,9 +78,15 @@ hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_
 void add_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
 // The shape of a dataset.
 std::vector<hsize_t> dataset_shape(hid_t location, const char* name);
-// Write (grow = true, extending the dataset to frame + 1 frames) or read one frame of a dataset.
-void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow);
+// Write (grow = true, extending the dataset to frame + 1 frames) or read one frame of a dataset,
+// or only its rows first_row .. first_row + rows - 1 (rows = kAllRows: the whole frame).
+constexpr hsize_t kAllRows = 0;
+void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow,
+                    hsize_t first_row = 0, hsize_t rows = kAllRows);
 void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame);
+// Rows of a frame written block by block (a frame of 10^8 disks without a copy of it).
+void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
+                       hsize_t rows);
 void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame);
 
 // The frames every per-frame dataset holds: the shortest length, since a run stopped in the

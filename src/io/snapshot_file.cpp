@@ -4,6 +4,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -186,20 +187,25 @@ SnapshotWriter::~SnapshotWriter() = default;
 
 std::int64_t SnapshotWriter::frames() const { return file_->frames(); }
 
-void SnapshotWriter::append(const SnapshotFrame& frame) {
+void SnapshotWriter::append(const SnapshotFrame& frame) { append(frame, StateBlocks(frame.particles)); }
+
+void SnapshotWriter::append(const SnapshotFrame& frame, const StateBlocks& particles) {
+  if (particles.size() != static_cast<std::size_t>(particles_)) throw std::logic_error("a snapshot frame of the wrong size");
   const hid_t f = file_->get();
   const auto k = static_cast<hsize_t>(file_->frames());
-  const ParticleState& p = frame.particles;
-  const int d = p.dimension;
-  append_frame(f, "positions", H5T_NATIVE_DOUBLE, interleave(p.size(), d, [&](int a) -> auto& { return p.position(a); }).data(), k);
-  append_frame(f, "velocities", H5T_NATIVE_DOUBLE, interleave(p.size(), d, [&](int a) -> auto& { return p.velocity(a); }).data(), k);
+  particles.for_each([&](const ParticleState& p, std::size_t first) {
+    if (rough_ && !p.rough()) throw std::logic_error("a frame of smooth grains in a snapshot file of rough ones");
+    const std::size_t count = p.size();
+    const int d = p.dimension;
+    const auto write = [&](const char* name, const std::vector<double>& rows) {
+      append_frame_rows(f, name, H5T_NATIVE_DOUBLE, rows.data(), k, first, count);
+    };
+    write("positions", interleave(count, d, [&](int a) -> auto& { return p.position(a); }));
+    write("velocities", interleave(count, d, [&](int a) -> auto& { return p.velocity(a); }));
+    if (rough_) write("spins", interleave(count, p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); }));
+  });
   for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) { append_frame(f, name, type, value, k); });
   if (tc_) append_frame(f, "last_collision", H5T_NATIVE_DOUBLE, frame.clock.last_collision.data(), k);
-  if (rough_) {
-    if (!frame.particles.rough()) throw std::logic_error("a frame of smooth grains in a snapshot file of rough ones");
-    const auto spins = interleave(p.size(), p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); });
-    append_frame(f, "spins", H5T_NATIVE_DOUBLE, spins.data(), k);
-  }
   file_->end_frame();
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
@@ -56,6 +57,9 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   void append(const SnapshotFrame& frame);
+  // A frame whose particles (frame.particles is not read) come in blocks (a frame of 10^8 disks
+  // needs no copy of the whole state).
+  void append(const SnapshotFrame& frame, const StateBlocks& particles);
   std::int64_t frames() const;
   // Close and rename to the final name.
   void finish();

@@ -20,28 +20,6 @@ double mean_cell_temperature(const CellFields& cells) {
   return occupied > 0 ? temperature_sum / occupied : 0.0;
 }
 
-// ⟨I|ω|²⟩ per particle (twice the rotational kinetic energy per particle).
-double mean_spin_energy(const ParticleState& state, const SpinInertia& inertia) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    double w2 = 0.0;
-    for (int k = first_spin_axis(state.dimension); k < 3; ++k) w2 += state.spin(k)[i] * state.spin(k)[i];
-    sum += inertia.of(state, i) * w2;
-  }
-  return sum / static_cast<double>(state.size());
-}
-
-// −⟨m g·r⟩ per particle: the potential energy in a uniform field g, zero at the box's origin.
-double mean_potential_energy(const ParticleState& state, const std::array<double, 3>& gravity) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    double g_dot_r = 0.0;
-    for (int a = 0; a < state.dimension; ++a) g_dot_r += gravity[static_cast<std::size_t>(a)] * state.position(a)[i];
-    sum -= state.mass_of(i) * g_dot_r;
-  }
-  return sum / static_cast<double>(state.size());
-}
-
 }  // namespace
 
 DiagnosticsSample diagnostics_layout(const SystemParams& params) {
@@ -103,14 +81,14 @@ void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
 }
 
 template <int D>
-CellFields GlobalDiagnostics<D>::cell_fields(const ParticleState& state, bool subtract_shear_profile) const {
+CellFields GlobalDiagnostics<D>::cell_fields(const StateBlocks& state, bool subtract_shear_profile) const {
   CellMoments moments(grid_, spin_inertia(params_));
   moments.add(state, frame_, subtract_shear_profile);
   return fields_from_moments(moments, frame_, 0.0, subtract_shear_profile);
 }
 
 template <int D>
-DiagnosticsSample GlobalDiagnostics<D>::sample(const ParticleState& state, double t, std::int64_t collisions,
+DiagnosticsSample GlobalDiagnostics<D>::sample(const StateBlocks& state, double t, std::int64_t collisions,
                                                double shear_velocity, double shear_offset) {
   frame_.shear_velocity = shear_velocity;  // u(y) of the images' velocity now (shear protocols)
   const std::size_t n = state.size();
@@ -129,45 +107,58 @@ DiagnosticsSample GlobalDiagnostics<D>::sample(const ParticleState& state, doubl
   out.temperature = mean_cell_temperature(cells);
   out.temperature_thesis_cells = frame_.sheared() ? mean_cell_temperature(cell_fields(state, false)) : out.temperature;
 
-  // Lab and fluctuating (v − u(y)) velocities of particle i; the sums run x, y, z in order.
-  const auto fluctuation = [&](std::size_t i, int axis) {
-    return axis == 0 ? state.vx[i] - frame_.mean_flow(state.y[i]) : state.velocity(axis)[i];
-  };
+  // One pass over the particles, block by block (each sum runs in particle order).  Lab velocity
+  // v, fluctuation v − u(y), and v' = v − u(y) − V(r) with V(r) the cell mean of v − u (κ, eq 1.8;
+  // §2.1): the same fluctuation whose cell variances make T̄; components summed x, y, z in order.
   double kinetic = 0.0, fluct = 0.0, fluct_xy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    double v2 = state.vx[i] * state.vx[i];
-    double u2 = fluctuation(i, 0) * fluctuation(i, 0);
-    for (int a = 1; a < D; ++a) {
-      v2 += state.velocity(a)[i] * state.velocity(a)[i];
-      u2 += fluctuation(i, a) * fluctuation(i, a);
+  double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
+  double spin_sum = 0.0, potential_sum = 0.0;  // Σ I|ω|², −Σ m g·r
+  const SpinInertia inertia = spin_inertia(params_);
+  state.for_each([&](const ParticleState& s, std::size_t) {
+    const auto fluctuation = [&](std::size_t i, int axis) {
+      return axis == 0 ? s.vx[i] - frame_.mean_flow(s.y[i]) : s.velocity(axis)[i];
+    };
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      double v2 = s.vx[i] * s.vx[i];
+      double f2 = fluctuation(i, 0) * fluctuation(i, 0);
+      for (int a = 1; a < D; ++a) {
+        v2 += s.velocity(a)[i] * s.velocity(a)[i];
+        f2 += fluctuation(i, a) * fluctuation(i, a);
+      }
+      const double m = s.mass_of(i);
+      kinetic += m * v2;
+      fluct += m * f2;
+      fluct_xy += m * fluctuation(i, 0) * s.vy[i];
+
+      const std::size_t c = D == 3 ? grid_.index(s.x[i], s.y[i], s.z[i]) : grid_.index(s.x[i], s.y[i]);
+      const double ux = fluctuation(i, 0) - cells.velocity_x[c];
+      const double uy = s.vy[i] - cells.velocity_y[c];
+      double u2 = ux * ux + uy * uy;
+      if constexpr (D == 3) {
+        const double uz = s.vz[i] - cells.velocity_z[c];
+        u2 += uz * uz;
+      }
+      m2 += u2;
+      m4 += u2 * u2;
+      m3x += ux * ux * ux;
+      m3y += uy * uy * uy;
+
+      if (params_.roughness.rough) {
+        double w2 = 0.0;
+        for (int k = first_spin_axis(D); k < 3; ++k) w2 += s.spin(k)[i] * s.spin(k)[i];
+        spin_sum += inertia.of(s, i) * w2;
+      }
+      if (params_.has_gravity()) {
+        double g_dot_r = 0.0;
+        for (int a = 0; a < D; ++a) g_dot_r += params_.gravity[static_cast<std::size_t>(a)] * s.position(a)[i];
+        potential_sum -= m * g_dot_r;
+      }
     }
-    const double m = state.mass_of(i);
-    kinetic += m * v2;
-    fluct += m * u2;
-    fluct_xy += m * fluctuation(i, 0) * state.vy[i];
-  }
+  });
   out.kinetic_energy = 0.5 * kinetic / nd;
   out.temperature_global = kPerDegree * fluct / nd;
   out.pressure_kinetic = kPerDegree * fluct / volume;
   out.shear_stress_kinetic = fluct_xy / volume;
-
-  // Moments of the fluctuating velocity v' = v − u(y) − V(r), V(r) the cell mean of v − u (κ,
-  // eq 1.8; §2.1): the same fluctuation whose cell variances make T̄.
-  double m2 = 0.0, m4 = 0.0, m3x = 0.0, m3y = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t c = D == 3 ? grid_.index(state.x[i], state.y[i], state.z[i]) : grid_.index(state.x[i], state.y[i]);
-    const double ux = fluctuation(i, 0) - cells.velocity_x[c];
-    const double uy = state.vy[i] - cells.velocity_y[c];
-    double u2 = ux * ux + uy * uy;
-    if constexpr (D == 3) {
-      const double uz = state.vz[i] - cells.velocity_z[c];
-      u2 += uz * uz;
-    }
-    m2 += u2;
-    m4 += u2 * u2;
-    m3x += ux * ux * ux;
-    m3y += uy * uy * uy;
-  }
   m2 /= nd;
   m4 /= nd;
   out.flatness = m2 > 0.0 ? m4 / (m2 * m2) : 0.0;
@@ -190,13 +181,13 @@ DiagnosticsSample GlobalDiagnostics<D>::sample(const ParticleState& state, doubl
   } else {
     for_each_flow_measure(out.flow, [](const char*, double& value) { value = std::numeric_limits<double>::quiet_NaN(); });
   }
-  const double spin_energy = params_.roughness.rough ? mean_spin_energy(state, spin_inertia(params_)) : 0.0;
+  const double spin_energy = spin_sum / nd;  // ⟨I|ω|²⟩: twice the rotational kinetic energy per particle
   if (params_.roughness.rough) {
     const double rotational = spin_energy / (D == 3 ? 3.0 : 1.0);  // d_rot = 1 (disks), 3 (spheres)
     out.rotation = RotationSample{rotational, rotational / out.temperature_global};
   }
   if (params_.has_gravity()) {
-    const double potential = mean_potential_energy(state, params_.gravity);
+    const double potential = potential_sum / nd;  // −⟨m g·r⟩, zero at the box's origin
     out.gravity = GravitySample{potential, out.kinetic_energy + 0.5 * spin_energy + potential};
   }
   out.walls = walls_.sample(dt);

@@ -117,7 +117,7 @@ class GlobalDiagnostics final : public EventObserver<D> {
   // Measure the configuration `state` at time t (collisions since production started) and
   // close the current interval.  `shear_velocity` and `shear_offset` are the image velocity U and
   // offset Δ at time t (they change with time under a shear protocol).
-  DiagnosticsSample sample(const ParticleState& state, double t, std::int64_t collisions, double shear_velocity,
+  DiagnosticsSample sample(const StateBlocks& state, double t, std::int64_t collisions, double shear_velocity,
                            double shear_offset);
   // Forget the open interval's collisions (e.g. after the elastic pre-run).
   void restart_interval(double t, std::int64_t collisions);
@@ -127,7 +127,7 @@ class GlobalDiagnostics final : public EventObserver<D> {
 
  private:
   // Fields of the coarse-graining cells, optionally of the velocities relative to u(y).
-  CellFields cell_fields(const ParticleState& state, bool subtract_shear_profile) const;
+  CellFields cell_fields(const StateBlocks& state, bool subtract_shear_profile) const;
 
   SystemParams params_;
   ShearFrame frame_;
