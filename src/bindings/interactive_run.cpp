@@ -90,8 +90,8 @@ void InteractiveRun<D>::start_production() {
 
 template <int D>
 void InteractiveRun<D>::take_sample() {
-  samples_.push_back(diagnostics_->sample(sim_->state(), sim_->time(), sim_->collisions(), sim_->image_velocity(),
-                                          sim_->shear_offset()));
+  samples_.push_back(diagnostics_->sample(sim_->state_blocks(), sim_->time(), sim_->collisions(),
+                                          sim_->image_velocity(), sim_->shear_offset()));
 }
 
 template <int D>
