@@ -34,11 +34,7 @@ struct CollisionsOptions {
 template <int D>
 int continue_and_measure(const CollisionsOptions& o, const RunConfig& config, const SnapshotRead& snapshot) {
   const SystemParams& system = config.system;
-  CellGridRequest request{system.length_x, system.length_y, system.diameter, system.particles,
-                          config.lees_edwards, config.particles_per_cell, config.engine_cells};
-  request.dimension = D;
-  request.length_z = system.length_z;
-  const CellGridChoice choice = choose_cell_grid(request);
+  const CellGridChoice choice = choose_cell_grid(engine_grid_request(config));
   if (!choice.grid) {
     fmt::print(stderr, "granule analyze collisions: error: {}\n", choice.error);
     return kExitBadInput;

@@ -1,5 +1,6 @@
-// `granule plot export`: particles as extended XYZ (OVITO) or VTK PolyData (ParaView), and
-// coarse-grained fields as VTK ImageData, one frame or all frames (multi-frame XYZ, .pvd series).
+// `granule plot export`: particles as extended XYZ or HOOMD's GSD (OVITO) or VTK PolyData
+// (ParaView), and coarse-grained fields as VTK ImageData, one frame or all frames (multi-frame
+// XYZ and GSD, .pvd series).  GSD is written by python/granule_plots/export_gsd.py with python3-gsd.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -61,12 +62,19 @@ void write_vtk_series(const fs::path& series, const std::vector<std::int64_t>& f
   }
 }
 
-void export_particles(const ExportArguments& a, const std::string& snapshots) {
+// Returns the exit code (that of the GSD writer for --format gsd).
+int export_particles(const ExportArguments& a, const std::string& snapshots) {
   const std::vector<std::int64_t> frames = chosen_frames(a, read_snapshot(snapshots, 0).frames);
   const bool xyz = a.format == "xyz";
-  const std::string default_name = frames.size() > 1 ? (xyz ? "particles.xyz" : "particles.pvd")
-                                                     : fmt::format("particles_{}.{}", frames[0], xyz ? "xyz" : "vtp");
+  const bool gsd = a.format == "gsd";
+  const std::string single_extension = xyz ? "xyz" : gsd ? "gsd" : "vtp";
+  const std::string default_name = frames.size() > 1 ? (xyz || gsd ? "particles." + single_extension : "particles.pvd")
+                                                     : fmt::format("particles_{}.{}", frames[0], single_extension);
   const fs::path out = a.out.empty() ? output_beside(a.input, default_name) : a.out;
+  if (gsd) {
+    return run_plot_script("export_gsd",
+                           {snapshots, "--out", out.string(), "--frames", fmt::format("{}", fmt::join(frames, ","))});
+  }
   if (xyz) {
     StagedFile file(out.string());
     for (std::int64_t k : frames) {
@@ -78,13 +86,14 @@ void export_particles(const ExportArguments& a, const std::string& snapshots) {
     }
     file.commit();
     fmt::print("wrote {} ({} frames)\n", out.string(), frames.size());
-    return;
+    return 0;
   }
   write_vtk_series(out, frames, "vtp", [&](std::int64_t k, const std::string& path) {
     const SnapshotRead s = read_snapshot(snapshots, k);
     write_vtp_particles(path, s.frame.particles, s.metadata.system.diameter, s.frame.clock.time);
     return s.frame.clock.time;
   });
+  return 0;
 }
 
 // The grid of fields computed from snapshots: --cells NX NY (NZ in 3D), or ~40 disks a cell in 2D
@@ -125,7 +134,7 @@ void export_snapshot_fields(const ExportArguments& a, const std::string& snapsho
 }
 
 void export_fields(const ExportArguments& a) {
-  if (a.format != "vtk") throw BadPlotInput("--what fields needs --format vtk (extended XYZ holds particles only)");
+  if (a.format != "vtk") throw BadPlotInput("--what fields needs --format vtk (extended XYZ and GSD hold particles only)");
   // A fields file (fields.h5) if the run has one, else fields computed from the snapshots.
   const bool from_fields_file = fs::is_directory(a.input) ? fs::exists(fs::path(a.input) / "fields.h5")
                                                           : !fs::path(a.input).filename().string().starts_with("snapshots");
@@ -146,7 +155,9 @@ void export_fields(const ExportArguments& a) {
 }
 
 int plot_export(const ExportArguments& a) {
-  if (a.format != "xyz" && a.format != "vtk") throw BadPlotInput(fmt::format("--format {} is not one of xyz, vtk", a.format));
+  if (a.format != "xyz" && a.format != "vtk" && a.format != "gsd") {
+    throw BadPlotInput(fmt::format("--format {} is not one of xyz, gsd, vtk", a.format));
+  }
   if (a.what != "particles" && a.what != "fields") {
     throw BadPlotInput(fmt::format("--what {} is not one of particles, fields", a.what));
   }
@@ -155,10 +166,9 @@ int plot_export(const ExportArguments& a) {
   }
   if (a.what == "fields") {
     export_fields(a);
-  } else {
-    export_particles(a, locate_run_file(a.input, "snapshots.h5"));
+    return 0;
   }
-  return 0;
+  return export_particles(a, locate_run_file(a.input, "snapshots.h5"));
 }
 
 }  // namespace
@@ -166,14 +176,14 @@ int plot_export(const ExportArguments& a) {
 void add_plot_export_command(CLI::App& plot) {
   auto a = std::make_shared<ExportArguments>();
   CLI::App* c = plot.add_subcommand(
-      "export", "Export particles (extended XYZ for OVITO, VTK .vtp for ParaView) or coarse-grained fields (VTK .vti)");
+      "export", "Export particles (extended XYZ or HOOMD GSD for OVITO, VTK .vtp for ParaView) or coarse-grained fields (VTK .vti)");
   c->add_option("input", a->input, "Run directory, snapshot file or fields file")->required();
-  c->add_option("--format", a->format, "xyz (OVITO) or vtk (ParaView)")->required();
+  c->add_option("--format", a->format, "xyz or gsd (OVITO), or vtk (ParaView)")->required();
   c->add_option("--what", a->what, "particles, or fields (from fields.h5 if present, else computed from the snapshots)")
       ->capture_default_str();
   c->add_option("--frame", a->frame, "Frame index (negative counts from the end)")->capture_default_str();
-  c->add_flag("--all-frames", a->all_frames, "Every frame: one multi-frame .xyz, or one VTK file per frame and a .pvd series");
-  c->add_option("--out", a->out, "Output file (default: particles_<k>.xyz/.vtp, particles.xyz/.pvd, fields_<k>.vti or fields.pvd beside the input)");
+  c->add_flag("--all-frames", a->all_frames, "Every frame: one multi-frame .xyz or .gsd, or one VTK file per frame and a .pvd series");
+  c->add_option("--out", a->out, "Output file (default: particles_<k>.xyz/.gsd/.vtp, particles.xyz/.gsd/.pvd, fields_<k>.vti or fields.pvd beside the input)");
   c->add_option("--cells", a->cells,
                 "Coarse-graining grid NX NY (3D: NX NY NZ) of fields computed from snapshots (default: ~40 disks, ~20 spheres a cell)")
       ->expected(2, 3);

@@ -62,12 +62,7 @@ RunConfig configuration(const RunOptions& options, bool resume, const std::strin
 }
 
 CellGrid engine_grid(const RunConfig& config) {
-  const SystemParams& s = config.system;
-  CellGridRequest request{s.length_x, s.length_y, s.diameter, s.particles, config.lees_edwards, config.particles_per_cell,
-                          config.engine_cells};
-  request.dimension = s.dimension;
-  request.length_z = s.length_z;
-  const CellGridChoice choice = choose_cell_grid(request);
+  const CellGridChoice choice = choose_cell_grid(engine_grid_request(config));
   if (!choice.grid) throw CommandFailure{kExitBadInput, choice.error};
   return *choice.grid;
 }

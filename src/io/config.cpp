@@ -71,10 +71,7 @@ void require_one_of(const ConfigReader& in, const std::string& count, const std:
 // The engine's cell grid must exist (choose_cell_grid explains why not) and have 32-bit cell ids.
 void check_engine_grid(const RunConfig& c) {
   const SystemParams& s = c.system;
-  CellGridRequest request{s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells};
-  request.dimension = s.dimension;
-  request.length_z = s.length_z;
-  const CellGridChoice choice = choose_cell_grid(request);
+  const CellGridChoice choice = choose_cell_grid(engine_grid_request(c));
   if (!choice.grid) throw ConfigError{choice.error};
   const std::int64_t cells = choice.grid->cell_count();
   if (cells > kMaxEngineCells) {
@@ -225,6 +222,15 @@ void erase_replaced(toml::table& root, const std::string& assignment) {
 }
 
 }  // namespace
+
+CellGridRequest engine_grid_request(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  CellGridRequest request{s.length_x, s.length_y, s.diameter, s.particles, config.lees_edwards, config.particles_per_cell,
+                          config.engine_cells};
+  request.dimension = s.dimension;
+  request.length_z = s.length_z;
+  return request;
+}
 
 ConfigResult parse_config(const std::string& text, const std::vector<std::string>& overrides) {
   try {

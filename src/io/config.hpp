@@ -10,6 +10,7 @@
 
 #include "analysis/density_windows.hpp"
 #include "analysis/free_paths.hpp"
+#include "cells/cell_grid.hpp"
 #include "engine/system_params.hpp"
 #include "init/initial_state.hpp"
 
@@ -85,6 +86,10 @@ struct ConfigResult {
 // `text` is TOML (may be empty: the built-in defaults); `overrides` are "section.key=value".
 ConfigResult parse_config(const std::string& text, const std::vector<std::string>& overrides);
 ConfigResult load_config_file(const std::string& path, const std::vector<std::string>& overrides);
+
+// What the engine's cell grid of this run is chosen from (choose_cell_grid); a parsed
+// configuration has been checked to give a grid.
+CellGridRequest engine_grid_request(const RunConfig& config);
 
 // The per-particle diameters and masses of the run (drawn from its seed; empty when monodisperse),
 // for make_initial_state.

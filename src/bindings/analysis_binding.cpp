@@ -1,0 +1,161 @@
+// The analyses of saved configurations as functions on NumPy arrays:
+// coarse-grained cell fields (analysis/cell_fields.hpp, thesis §1.4.3) and
+// Fourier spectra of mass and momentum (spectra/, thesis §2.2 and §3.2.1), the
+// computations behind `granule analyze fields|spectra`.
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+
+#include "analysis/cell_fields.hpp"
+#include "bindings/bindings.hpp"
+#include "bindings/numpy_arrays.hpp"
+#include "spectra/dominant_mode.hpp"
+#include "spectra/power_spectra.hpp"
+#include "spectra/spectral_transforms.hpp"
+
+namespace granule::bindings {
+
+namespace py = pybind11;
+
+namespace {
+
+struct Box {
+  double length_x = 1.0, length_y = 1.0, length_z = 1.0;
+};
+
+Box box_of(const std::vector<double>& box, int dimension) {
+  if (static_cast<int>(box.size()) != dimension)
+    throw std::invalid_argument("box must have one length per axis of positions");
+  return {box[0], box[1], dimension == 3 ? box[2] : 1.0};
+}
+
+FieldGrid field_grid(const std::optional<std::vector<int>>& cells, const Box& box, int dimension,
+                     std::size_t particles) {
+  const auto n = static_cast<std::int64_t>(particles);
+  if (!cells) {
+    return dimension == 3 ? default_field_grid_3d(box.length_x, box.length_y, box.length_z, n)
+                          : default_field_grid(box.length_x, box.length_y, n);
+  }
+  if (static_cast<int>(cells->size()) != dimension)
+    throw std::invalid_argument("cells must be (nx, ny) in 2D, (nx, ny, nz) in 3D");
+  for (int c : *cells) {
+    if (c < 1 || c > (1 << 14)) throw std::invalid_argument("cells must be integers in [1, 16384]");
+  }
+  if (dimension == 3) return {(*cells)[0], (*cells)[1], box.length_x, box.length_y, (*cells)[2], box.length_z, 3};
+  return {(*cells)[0], (*cells)[1], box.length_x, box.length_y};
+}
+
+// A per-cell field as an array indexed [iy, ix] (2D) or [iz, iy, ix] (3D).
+Array cell_array(const std::vector<double>& values, const FieldGrid& grid) {
+  std::vector<py::ssize_t> shape = {grid.ny, grid.nx};
+  if (grid.dimension == 3) shape.insert(shape.begin(), grid.nz);
+  Array array(shape);
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  return array;
+}
+
+py::dict cell_fields(const Array& positions, const Array& velocities, const std::vector<double>& box,
+                     const std::optional<std::vector<int>>& cells, const py::object& masses, double shear_velocity,
+                     double shear_offset, bool subtract_shear_profile) {
+  const ParticleState state = particle_state(positions, velocities, masses);
+  const Box lengths = box_of(box, state.dimension);
+  const FieldGrid grid = field_grid(cells, lengths, state.dimension, state.size());
+  const ShearFrame frame{lengths.length_x, lengths.length_y, shear_velocity};
+  CellMoments moments(grid);
+  moments.add(state, frame, subtract_shear_profile);
+  const CellFields fields = fields_from_moments(moments, frame, shear_offset, subtract_shear_profile);
+  py::dict out;
+  for_each_field(fields,
+                 [&](const char* name, const std::vector<double>& values) { out[name] = cell_array(values, grid); });
+  return out;
+}
+
+py::dict dominant(const spectra::DominantMode& mode) {
+  py::dict out;
+  out["k"] = mode.k;
+  out["kx"] = mode.kx;
+  out["ky"] = mode.ky;
+  out["kz"] = mode.kz;
+  out["angle_deg"] = mode.angle_deg;
+  out["length"] = mode.length;
+  out["power"] = mode.power;
+  out["power_over_ideal_gas"] = mode.power_over_ideal_gas;
+  out["noise_p_value"] = mode.noise_p_value;
+  return out;
+}
+
+py::dict power_spectra(const Array& positions, const Array& velocities, const std::vector<double>& box,
+                       const py::object& masses, double shear_velocity, double shear_offset,
+                       std::optional<int> max_mode, const std::string& method, bool subtract_shear_profile,
+                       bool exclude_ky_axis, std::optional<double> dk) {
+  const ParticleState state = particle_state(positions, velocities, masses);
+  const int d = state.dimension;
+  const Box lengths = box_of(box, d);
+  if (method != "fast" && method != "exact") throw std::invalid_argument("method must be \"fast\" or \"exact\"");
+  spectra::TransformOptions options;
+  options.max_mode = max_mode.value_or(d == 3 ? 32 : 64);  // the defaults of `granule analyze spectra`
+  if (options.max_mode < 1 || options.max_mode > (d == 3 ? 256 : 2048)) {
+    throw std::invalid_argument("max_mode must be in [1, 2048] in 2D, [1, 256] in 3D");
+  }
+  options.method = method == "exact" ? spectra::SpectralMethod::exact : spectra::SpectralMethod::fast;
+  options.subtract_shear_profile = subtract_shear_profile;
+  const ShearFrame frame{lengths.length_x, lengths.length_y, shear_velocity};
+  const spectra::ReciprocalLattice lattice = spectra::lattice_for_frame(frame, shear_offset, d, lengths.length_z);
+  const spectra::PowerMaps maps =
+      spectra::power_maps(spectra::transform_fields(state, frame, lattice, options), exclude_ky_axis);
+  const double width =
+      dk.value_or(spectra::default_annulus_width(spectra::lattice_for_frame(frame, 0.0, d, lengths.length_z)));
+  const spectra::AnnulusSpectrum annulus =
+      spectra::annulus_sums(maps, width, lattice.complete_radius(options.max_mode));
+  py::dict out;
+  out["dk"] = annulus.dk;
+  out["k"] = read_only_vector(annulus.k);
+  out["modes"] = annulus.modes;
+  out["density"] = read_only_vector(annulus.density);
+  out["momentum_x"] = read_only_vector(annulus.momentum_x);
+  out["momentum_y"] = read_only_vector(annulus.momentum_y);
+  if (d == 3) out["momentum_z"] = read_only_vector(annulus.momentum_z);
+  out["momentum"] = read_only_vector(annulus.momentum);
+  out["ideal_density"] = maps.ideal_density;
+  out["ideal_momentum"] = maps.ideal_momentum();
+  out["dominant_density_mode"] = dominant(spectra::dominant_mode(maps, maps.density, maps.ideal_density));
+  py::dict mode_maps;
+  mode_maps["kx"] = read_only_vector(maps.kx);
+  mode_maps["ky"] = read_only_vector(maps.ky);
+  if (d == 3) mode_maps["kz"] = read_only_vector(maps.kz);
+  mode_maps["density"] = read_only_vector(maps.density);
+  mode_maps["momentum"] = read_only_vector(maps.momentum);
+  out["maps"] = mode_maps;
+  return out;
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  m.def("cell_fields", &cell_fields, py::arg("positions"), py::arg("velocities"), py::arg("box"),
+        py::arg("cells") = py::none(), py::arg("masses") = py::none(), py::arg("shear_velocity") = 0.0,
+        py::arg("shear_offset") = 0.0, py::arg("subtract_shear_profile") = false, R"doc(
+Coarse-grained fields of thesis §1.4.3 (granule analyze fields) of one configuration: N × d lab
+positions in [0, L) and velocities, box (L_x, L_y[, L_z]), cells (nx, ny[, nz]) (default: about
+20 particles a cell), optional masses (N,) for mass-weighted V, T and stresses.  Lees–Edwards:
+shear_velocity U and shear_offset Δ give the vorticity's neighbours across y; with
+subtract_shear_profile the velocities are taken relative to u(y) = γ(y − L_y/2).  Returns name →
+array [iy, ix] (2D) or [iz, iy, ix] (3D): count, density, velocity_x, velocity_y, temperature
+(T per degree of freedom, eq 1.3), kinetic_xx/xy/yy, pressure_kinetic, vorticity,
+heat_flux_kinetic_x/y (and the z components in 3D), the names of fields.h5.
+)doc");
+  m.def("spectra", &power_spectra, py::arg("positions"), py::arg("velocities"), py::arg("box"),
+        py::arg("masses") = py::none(), py::arg("shear_velocity") = 0.0, py::arg("shear_offset") = 0.0,
+        py::arg("max_mode") = py::none(), py::arg("method") = "fast", py::arg("subtract_shear_profile") = false,
+        py::arg("exclude_ky_axis") = false, py::arg("dk") = py::none(), R"doc(
+Fourier spectra of mass and momentum (granule analyze spectra, docs/spectra.md) of one
+configuration on the allowed reciprocal lattice (sheared by shear_offset Δ under Lees–Edwards):
+the annulus (3D: shell) sums R(k), P_x(k), P_y(k), P(k) of width dk (default 2π/L_max) against
+ring centres k, with the number of modes per ring, the ideal-gas levels ⟨R⟩ and ⟨P⟩, the dominant
+density mode (its |k|, angle, length 2π/|k| and significance) and the mode maps.  max_mode M
+(default 64 in 2D, 32 in 3D) bounds the modes |l|, |m| (, |n|) ≤ M; method "fast" (gridded FFT,
+~1e-7 relative) or "exact" (direct sums).
+)doc");
+}
+
+}  // namespace granule::bindings

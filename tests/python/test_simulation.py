@@ -1,0 +1,169 @@
+"""granule.Simulation: construction from a dict or a TOML file, configuration errors with the
+command line's messages, runs, state arrays and their invariants."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import numpy as np
+import pytest
+
+import granule
+
+
+def test_dict_and_toml_file_give_the_same_run(tmp_path, small_config):
+    from_dict = granule.Simulation(small_config)
+    path = tmp_path / "run.toml"
+    path.write_text(from_dict.config_toml)
+    from_file = granule.Simulation(path)
+    assert from_dict.particles == from_file.particles == 500
+    assert np.array_equal(from_dict.positions, from_file.positions)
+    assert np.array_equal(from_dict.velocities, from_file.velocities)
+
+
+def test_overrides_act_like_set(small_config):
+    sim = granule.Simulation(small_config, overrides=["system.restitution=0.5", "system.particles=300"])
+    assert sim.particles == 300
+    assert sim.summary()["restitution"] == 0.5
+
+
+@pytest.mark.parametrize(
+    "key, value, expected",
+    [
+        ("restitution", 1.5, "system.restitution"),
+        ("particles", 1, "system.particles"),
+        ("no_such_key", 3, "system.no_such_key"),
+    ],
+)
+def test_config_errors_carry_the_command_lines_message(tmp_path, granule_cli, small_config, key, value, expected):
+    config = {**small_config, "system": {**small_config["system"], key: value}}
+    with pytest.raises(granule.ConfigError) as error:
+        granule.Simulation(config)
+    assert isinstance(error.value, ValueError)
+    message = str(error.value)
+    assert expected in message
+    # The same configuration as a file: `granule run` refuses it with exit 2 and the same message.
+    path = tmp_path / "bad.toml"
+    path.write_text(f"[system]\n{key} = {value}\n")
+    cli = granule_cli("run", path, "--out", tmp_path / "out")
+    assert cli.returncode == 2
+    assert message in cli.stderr
+
+
+def test_a_value_toml_cannot_hold_is_refused_by_key(small_config):
+    with pytest.raises(granule.ConfigError, match="system.restitution"):
+        granule.Simulation({"system": {"restitution": object()}})
+
+
+def test_run_advances_to_the_limits_and_records_the_time_series(small_config):
+    sim = granule.Simulation(small_config)
+    assert sim.time == 0.0 and sim.collisions == 0
+    assert sim.run(until_collisions_per_particle=2) == "collisions reached"
+    assert sim.collisions == 1000 and sim.collisions_per_particle == 2.0
+    t = sim.time
+    assert sim.run(until_time=1.5 * t) == "time reached"
+    assert sim.time == pytest.approx(1.5 * t)
+    series = sim.timeseries
+    assert series["c"][0] == 0.0 and series["c"][-1] == sim.collisions_per_particle
+    assert np.all(np.diff(series["t"]) > 0)
+    assert set(sim.timeseries_row) == set(series)
+    assert sim.timeseries_row["temperature_global"] == series["temperature_global"][-1]
+    # Without limits: to the configuration's run.until_collisions_per_particle.
+    sim.run()
+    assert sim.collisions_per_particle == 5.0
+    assert sim.summary()["c"] == 5.0
+
+
+def test_state_arrays_are_read_only_computed_copies(small_config):
+    sim = granule.Simulation(small_config)
+    sim.run(until_collisions_per_particle=1)
+    positions, velocities = sim.positions, sim.velocities
+    assert positions.shape == velocities.shape == (500, 2)
+    assert np.all((positions >= 0) & (positions < 1))
+    with pytest.raises(ValueError):
+        positions[0, 0] = 0.5
+    before = positions.copy()
+    sim.run(until_collisions_per_particle=2)
+    assert np.array_equal(positions, before)  # an earlier array is not changed by the engine
+    assert not np.array_equal(sim.positions, before)
+    assert np.all(sim.masses == 1.0) and np.all(sim.diameters == sim.diameters[0])
+    assert sim.spins is None
+
+
+def test_collisions_conserve_momentum_and_dissipate_energy(small_config):
+    sim = granule.Simulation(small_config)
+    v0 = sim.velocities
+    sim.run(until_collisions_per_particle=5)
+    v = sim.velocities
+    # The initial state has zero total momentum; collisions exchange it pairwise.
+    scale = np.abs(v0).sum()
+    assert np.abs(v0.sum(axis=0)).max() < 1e-12 * scale
+    assert np.abs(v.sum(axis=0)).max() < 1e-12 * scale
+    assert (v**2).sum() < (v0**2).sum()
+
+
+def test_spheres_mixtures_and_rough_grains_expose_their_arrays():
+    spheres = granule.Simulation({
+        "system": {"dimension": 3, "particles": 400, "packing_fraction": 0.05,
+                   "diameters": {"distribution": "bidisperse", "ratio": 2.0, "fraction": 0.5}},
+    })
+    assert spheres.dimension == 3 and spheres.positions.shape == (400, 3)
+    assert len(set(spheres.diameters)) == 2 and np.isclose(spheres.masses.mean(), 1.0)
+    rough = granule.Simulation({"system": {"particles": 300, "tangential_restitution": 0.5}})
+    assert rough.spins.shape == (300,)
+    rough.run(until_collisions_per_particle=1)
+    assert np.abs(rough.spins).max() > 0
+
+
+def interrupted(body, seconds=1.0):
+    """Runs `body` (Python source that prints "ready" before its long run and its result after
+    catching KeyboardInterrupt), sends SIGINT `seconds` after "ready"; returns its output."""
+    script = "import sys, granule\n" + textwrap.dedent(body)
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, env=os.environ)
+    assert process.stdout.readline().strip() == "ready"
+    time.sleep(seconds)
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=60)
+    assert process.returncode == 0, out
+    return out
+
+
+def test_ctrl_c_stops_a_run_cleanly_and_it_can_go_on():
+    out = interrupted("""
+        sim = granule.Simulation({"system": {"particles": 20000, "restitution": 0.99}})
+        print("ready", flush=True)
+        try:
+            sim.run(until_collisions_per_particle=1e6)
+        except KeyboardInterrupt:
+            c = sim.collisions_per_particle
+            sim.run(until_collisions_per_particle=c + 0.1)
+            print("interrupted", c, sim.collisions_per_particle, flush=True)
+            sys.exit(0)
+        sys.exit(1)
+    """)
+    words = out.split()
+    assert words[0] == "interrupted" and 0 < float(words[1]) < 1e6 and float(words[2]) >= float(words[1]) + 0.1
+
+
+def test_ctrl_c_stops_a_run_directory_with_its_checkpoint(tmp_path, granule_cli):
+    out = tmp_path / "run"
+    text = interrupted(f"""
+        print("ready", flush=True)
+        try:
+            granule.run_directory({{"system": {{"particles": 20000, "restitution": 0.99}},
+                                   "run": {{"until_collisions_per_particle": 1e6}}}}, {str(out)!r})
+        except KeyboardInterrupt:
+            print("interrupted", flush=True)
+            sys.exit(0)
+        sys.exit(1)
+    """, seconds=1.5)
+    assert text.strip() == "interrupted"
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["stop_reason"] == "interrupted" and summary["c"] > 0
+    end = summary["c"] + 0.5
+    resumed = granule_cli("run", "--resume", out, "--set", f"run.until_collisions_per_particle={end}")
+    assert resumed.returncode == 0, resumed.stderr
+    assert json.loads((out / "summary.json").read_text())["c"] == pytest.approx(end, abs=1e-4)
