@@ -1,0 +1,99 @@
+// Inline members of Simulation<D> on the hot path of prediction: the image of the box across a
+// face (ARCHITECTURE.md, "Boundaries per axis") and the scan of the cells within reach of a
+// particle.  Included by engine/simulation.hpp only.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include "engine/simulation.hpp"
+
+namespace granule {
+
+template <int D>
+inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, int direction, double strain) const {
+  FaceImage image{};
+  if (axis == 1) {
+    const ImageShift shift = frame_.image_shift(0, direction, strain);
+    image.position[0] = shift.position.x;
+    image.position[1] = shift.position.y;
+    image.velocity_x = shift.velocity_x;
+  } else {
+    image.position[axis] = direction * (axis == 0 ? params_.length_x : params_.length_z);
+  }
+  return image;
+}
+
+template <int D>
+template <typename Visit>
+void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach,
+                                       Visit&& visit) const {
+  const double s = strain();
+  // The cells within reach with their images, in visiting order: layers (z, 3D only) outermost,
+  // then rows (y), then columns (x).  The order decides which of two partners at equal times is
+  // taken, so it is the 2D engine's order.
+  struct CellVisit {
+    std::int32_t first;  // head of its list
+    Vector shift;        // position of the image its particles are seen at
+    double shift_vx;     // and the velocity of that image along x
+  };
+  constexpr int kStencil = D == 3 ? 27 : 9;
+  std::array<CellVisit, kStencil> cells;
+  int visits = 0;
+  const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
+  const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
+  for (int dl = lowest_layer; dl <= highest_layer; ++dl) {
+    int layer = 0;
+    double shift_z = 0.0;
+    if constexpr (D == 3) {
+      layer = cell[2] + dl;
+      if (layer < 0 || layer >= grid_.nz) {
+        if (params_.walls[2]) continue;
+        const int direction = layer < 0 ? -1 : 1;
+        layer -= direction * grid_.nz;
+        shift_z = image_across(2, direction, s).position[2];
+      }
+    }
+    for (int dr = reach.lowest[1]; dr <= reach.highest[1]; ++dr) {
+      int r = cell[1] + dr;
+      int iy = 0;
+      if ((r < 0 || r >= grid_.ny) && params_.walls[1]) continue;
+      if (r < 0) {
+        r += grid_.ny;
+        iy = -1;
+      } else if (r >= grid_.ny) {
+        r -= grid_.ny;
+        iy = 1;
+      }
+      const ImageShift row_shift = frame_.image_shift(0, iy, s);
+      for (int dc = reach.lowest[0]; dc <= reach.highest[0]; ++dc) {
+        int c = cell[0] + dc;
+        Vector shift;
+        shift[0] = row_shift.position.x;
+        shift[1] = row_shift.position.y;
+        if constexpr (D == 3) shift[2] = shift_z;
+        if (c < 0 || c >= grid_.nx) {
+          if (params_.walls[0]) continue;
+          const int direction = c < 0 ? -1 : 1;
+          c -= direction * grid_.nx;
+          shift[0] += image_across(0, direction, s).position[0];
+        }
+        // The head of every cell is read, and its first record prefetched, before any list is
+        // followed: the lists are chains through the records, and read one after the other their
+        // cache misses would not overlap (without a branch, which an empty cell would mispredict).
+        const std::int32_t head = lists_.first(grid_.index(c, r, layer));
+        __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
+        cells[visits++] = {head, shift, row_shift.velocity_x};
+      }
+    }
+  }
+  for (int k = 0; k < visits; ++k) {
+    const CellVisit& v = cells[static_cast<std::size_t>(k)];
+    for (std::int32_t j = v.first; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
+      if (j != i) visit(j, v.shift, v.shift_vx);
+    }
+  }
+}
+
+}  // namespace granule
