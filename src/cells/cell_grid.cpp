@@ -80,7 +80,8 @@ void CellLists::save(StateArchive& archive, const std::string& prefix) const { a
 
 void CellLists::restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells,
                         const std::vector<std::int32_t>& links) {
-  head_ = archive.get<std::int32_t>(prefix + "head");
+  const auto& heads = archive.get<std::int32_t>(prefix + "head");
+  head_.assign(heads.begin(), heads.end());
   const auto particles = static_cast<std::int64_t>(links.size());
   const auto valid = [&](std::int32_t id) { return id == kEnd || (id >= 0 && id < particles); };
   if (head_.size() != static_cast<std::size_t>(cells) || !std::all_of(head_.begin(), head_.end(), valid) ||

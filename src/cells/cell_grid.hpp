@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "memory/huge_page_allocator.hpp"
+
 #include "engine/state_archive.hpp"
 
 namespace granule {
@@ -102,7 +104,7 @@ class CellLists {
  private:
   void restore(const StateArchive& archive, const std::string& prefix, std::int64_t cells, const std::vector<std::int32_t>& links);
 
-  std::vector<std::int32_t> head_;
+  HugePageVector<std::int32_t> head_;
 };
 
 }  // namespace granule

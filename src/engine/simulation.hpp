@@ -23,6 +23,7 @@
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
+#include "memory/huge_page_allocator.hpp"
 #include "engine/state_archive.hpp"
 #include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
@@ -297,22 +298,22 @@ class Simulation {
   // Particles by plain id: the records a neighbour's collision test reads (position and velocity
   // at local time t, cell-list link, collision counter), then arrays of what only a particle's
   // own events read.
-  std::vector<ParticleRecord<D>> particles_;
+  HugePageVector<ParticleRecord<D>> particles_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only
   // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
   // events); rough grains only.
   std::array<std::vector<double>, kSpinComponents> spin_;
   Vector gravity_;
   bool has_gravity_ = false;
-  std::vector<std::int32_t> cell_;
+  HugePageVector<std::int32_t> cell_;
   std::vector<double> last_collision_;  // TC model only
   // Pending event of each particle (its time lives in the queue).
-  std::vector<EventKind> kind_;
-  std::vector<std::int32_t> partner_;
-  std::vector<std::uint32_t> partner_count_;
+  HugePageVector<EventKind> kind_;
+  HugePageVector<std::int32_t> partner_;
+  HugePageVector<std::uint32_t> partner_count_;
   // The time of the collision candidate (partner_), pending or not (+inf: none): kept through
   // crossings, and through changes of U where the pair meets inside the box.
-  std::vector<double> collision_time_;
+  HugePageVector<double> collision_time_;
 
   CellLists lists_;
   EventQueue queue_;

@@ -230,7 +230,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       if (per_particle_sizes && !polydisperse) return;
       if (key.substr(0, 5) == "spin_" && !params.roughness.rough) return;
       const bool absent = key == "last_collision" && params.tc_duration <= 0.0;
-      value = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
+      const auto loaded = array_of_size<typename Value::value_type>(archive, prefix + name, absent ? 0 : n);
+      value.assign(loaded.begin(), loaded.end());
     }
   });
   shear_rate_ = frame_.shear_velocity / params.length_y;

@@ -46,8 +46,8 @@ class StateArchive {
     arrays_[name] = std::move(values);
   }
   // A large array that the caller keeps unchanged until the archive is written (see streaming()).
-  template <typename T>
-  void put_view(const std::string& name, const std::vector<T>& values) {
+  template <typename T, typename Allocator>
+  void put_view(const std::string& name, const std::vector<T, Allocator>& values) {
     put_generated<T>(name, values.size(), [&values](std::size_t first, std::span<T> out) {
       std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
     });

@@ -233,7 +233,7 @@ void EventQueue::restore(const StateArchive& archive, const std::string& prefix,
     throw std::runtime_error("checkpoint event queue has a time that is not a number");
   }
   reset(particles);
-  time_ = times;
+  time_.assign(times.begin(), times.end());
   rebuild();
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/state_archive.hpp"
+#include "memory/huge_page_allocator.hpp"
 
 namespace granule {
 
@@ -74,12 +75,12 @@ class EventQueue {
   // Re-distribute every event with a bucket width fitted to the present spread of times.
   void rebuild() const;
 
-  std::vector<double> time_;
+  HugePageVector<double> time_;
   // The calendar's state changes when the top is looked up (settle), which the engine does in its
   // const queries: it is mutable, the order it gives is not.
-  mutable std::vector<std::int32_t> next_;      // next in its bucket list, or its position in current_
-  mutable std::vector<std::int32_t> previous_;  // previous in its bucket list, or a marker above
-  mutable std::vector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
+  mutable HugePageVector<std::int32_t> next_;      // next in its bucket list, or its position in current_
+  mutable HugePageVector<std::int32_t> previous_;  // previous in its bucket list, or a marker above
+  mutable HugePageVector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
   mutable std::vector<std::int32_t> current_;   // the current bucket: a binary heap by (time, id)
   mutable std::int64_t bucket_ = 0;             // the current bucket
   mutable double width_ = 1.0;                  // of a bucket, in time
