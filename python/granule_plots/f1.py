@@ -9,8 +9,12 @@ table as curves, the Jenkins-Richman coefficients dotted (Fig 5.4); (F) −log f
 (5.32)-(5.34) against v at the profile angle and against θ at the profile speed (Figs 5.10, 5.11).
 Row 3 draws every window of the file against its temperature, one marker per density window:
 (I) b₀⁽⁰⁾, √(2T) b₀⁽¹⁾, 2T b₀⁽²⁾ (Figs 5.5, 5.8); (J) the phases ε₂ⱼ (Fig 5.6); (K) Tr τ, Tr τ*,
-Tr τ** per particle (5.30, 5.31, Fig 5.7); (L) (b₀⁽¹⁾)²/b₀⁽²⁾ (Fig 5.9).  Error bars are the file's
-bootstrap errors.  Twelve 4 × 3.6 inch panels, three rows of four."""
+Tr τ** per particle (5.30, 5.31, Fig 5.7); (L) (b₀⁽¹⁾)²/b₀⁽²⁾ (Fig 5.9).  Error bars of row 3 are
+percentile bootstrap intervals: the 16th to 84th percentile of the file's converged replicates (±1 sd
+for a Gaussian spread, but not stretched by one wild replicate), or ±1 bootstrap sd for files without
+the replicates.  Each panel's y range is set by robust quantiles: the 5th percentile of the lower ends
+to the 95th of the upper ends, widened to hold every estimate; a bar reaching beyond it is clipped at
+the edge and marked there with an open triangle.  Twelve 4 × 3.6 inch panels, three rows of four."""
 import math
 
 import numpy as np
@@ -39,6 +43,48 @@ def in_pi(angle):
     """An angle as a multiple of π for labels: 0, π/4 → "0.25π", π → "π"."""
     multiple = f"{angle / math.pi:.3g}"
     return {"0": "0", "1": "π"}.get(multiple, multiple + "π")
+
+
+PERCENTILES = (16.0, 84.0)  # the central 68 % of the replicates: ±1 sd for a Gaussian spread
+ROBUST_QUANTILES = (5.0, 95.0)  # of the interval ends: the y range of a row-3 panel
+
+
+def interval(estimate, replicates, sd):
+    """(lower, upper) of the percentile bootstrap interval, or estimate ∓ sd without replicates."""
+    if replicates is None or len(replicates) < 2:
+        return estimate - sd, estimate + sd
+    low, high = np.nanpercentile(replicates, PERCENTILES, axis=0)
+    return low, high
+
+
+def draw_interval(ax, x, y, bounds, **style):
+    """A point with its interval as an error bar (clipped later by robust_range)."""
+    low, high = bounds
+    ax.errorbar(x, y, [[max(0.0, y - low)], [max(0.0, high - y)]], capsize=2, ms=4, **style)
+    ax._intervals = getattr(ax, "_intervals", []) + [(x, y, low, high, style.get("color", "k"))]
+
+
+def robust_range(ax):
+    """Sets the y range from robust quantiles of the interval ends, holding every estimate, and marks
+    the bars that reach beyond it with open triangles at the edge; returns how many were clipped."""
+    intervals = [i for i in getattr(ax, "_intervals", []) if np.isfinite(i[1])]
+    if not intervals:
+        return 0
+    ys = np.array([i[1] for i in intervals])
+    lows = np.array([i[2] for i in intervals if np.isfinite(i[2])] or [ys.min()])
+    highs = np.array([i[3] for i in intervals if np.isfinite(i[3])] or [ys.max()])
+    bottom = min(np.percentile(lows, ROBUST_QUANTILES[0]), ys.min())
+    top = max(np.percentile(highs, ROBUST_QUANTILES[1]), ys.max())
+    pad = 0.05 * (top - bottom) if top > bottom else 0.05 * max(1.0, abs(top))
+    bottom, top = bottom - pad, top + pad
+    ax.set_ylim(bottom, top)
+    clipped = 0
+    for x, _, low, high, color in intervals:
+        for end, edge, marker in ((low, bottom, "v"), (high, top, "^")):
+            if np.isfinite(end) and (end < edge if marker == "v" else end > edge):
+                ax.plot(x, edge, marker, mfc="none", mec=color, ms=6, clip_on=False)
+                clipped += 1
+    return clipped
 
 
 def dimensionless(b, s):
@@ -155,13 +201,26 @@ def window_rows(f):
         s = float(g.attrs["speed_scale"])
         table, error = g["table"][:], g["table_error"][:]
         trace = {kind: g[f"stress_{kind}"][:] for kind in ("direct", "once", "twice")}
-        rows.append({"name": name, "density_center": float(g.attrs["density_center"]),
-                     "T": float(g.attrs["temperature"]), "rho": float(g.attrs["density"]), "speed_scale": s,
-                     "means": dimensionless(table[0, 1:], s), "means_error": dimensionless(error[0, 1:], s),
-                     "phases": table[1:, 0], "phases_error": error[1:, 0],
-                     "trace": {kind: t[0] + t[2] for kind, t in trace.items()},
-                     "trace_error": dict(zip(("direct", "once", "twice"), g["stress_trace_error"][:])),
-                     "ratio": float(g.attrs["ratio_b1_squared_over_b2"]), "ratio_error": float(g.attrs["ratio_error"])})
+        kinds = ("direct", "once", "twice")
+        replicated = "bootstrap_table" in g
+        tables = g["bootstrap_table"][:] if replicated else None
+        traces = g["bootstrap_traces"][:] if replicated else None
+        row = {"name": name, "density_center": float(g.attrs["density_center"]),
+               "T": float(g.attrs["temperature"]), "rho": float(g.attrs["density"]), "speed_scale": s,
+               "means": dimensionless(table[0, 1:], s), "means_error": dimensionless(error[0, 1:], s),
+               "phases": table[1:, 0], "phases_error": error[1:, 0],
+               "trace": {kind: t[0] + t[2] for kind, t in trace.items()},
+               "trace_error": dict(zip(kinds, g["stress_trace_error"][:])),
+               "ratio": float(g.attrs["ratio_b1_squared_over_b2"]), "ratio_error": float(g.attrs["ratio_error"]),
+               "percentile_intervals": replicated}
+        row["means_interval"] = interval(row["means"], None if tables is None else
+                                         np.array([dimensionless(t[0, 1:], s) for t in tables]), row["means_error"])
+        row["phases_interval"] = interval(row["phases"], None if tables is None else tables[:, 1:, 0],
+                                          row["phases_error"])
+        row["trace_interval"] = {kind: interval(row["trace"][kind], None if traces is None else traces[:, n],
+                                                row["trace_error"][kind]) for n, kind in enumerate(kinds)}
+        row["ratio_interval"] = interval(row["ratio"], g["bootstrap_ratio"][:] if replicated else None, row["ratio_error"])
+        rows.append(row)
     return rows
 
 
@@ -171,14 +230,16 @@ def draw_windows(ax_means, ax_phases, ax_stress, ax_ratio, rows, chosen):
     for row in rows:
         marker = markers[densities.index(row["density_center"]) % len(markers)]
         t = row["T"]
+        low, high = row["means_interval"]
         for i in range(3):
-            ax_means.errorbar(t, row["means"][i], row["means_error"][i], fmt=marker, color=f"C{i}", ms=4, capsize=2)
-        for j, (phase, error) in enumerate(zip(row["phases"], row["phases_error"])):
-            ax_phases.errorbar(t, phase, error, fmt=marker, color=f"C{j}", ms=4, capsize=2)
+            draw_interval(ax_means, t, row["means"][i], (low[i], high[i]), fmt=marker, color=f"C{i}")
+        low, high = row["phases_interval"]
+        for j, phase in enumerate(row["phases"]):
+            draw_interval(ax_phases, t, phase, (low[j], high[j]), fmt=marker, color=f"C{j}")
         for n, kind in enumerate(("direct", "once", "twice")):
-            ax_stress.errorbar(t, row["trace"][kind], row["trace_error"][kind], fmt=marker, color=f"C{n}", ms=4,
-                               capsize=2, mfc="none" if kind != "direct" else None)
-        ax_ratio.errorbar(t, row["ratio"], row["ratio_error"], fmt=marker, color="k", ms=4, capsize=2)
+            draw_interval(ax_stress, t, row["trace"][kind], row["trace_interval"][kind], fmt=marker, color=f"C{n}",
+                          mfc="none" if kind != "direct" else None)
+        draw_interval(ax_ratio, t, row["ratio"], row["ratio_interval"], fmt=marker, color="k")
     # Legends: colours say the quantity, markers the density window.
     for ax, labels in ((ax_means, COEFFICIENT_LABELS), (ax_phases, [f"ε{2 * j}" for j in range(1, 7)]),
                        (ax_stress, ("Tr τ (5.31)", "Tr τ* (5.30)", "Tr τ** (5.30)"))):
@@ -188,7 +249,11 @@ def draw_windows(ax_means, ax_phases, ax_stress, ax_ratio, rows, chosen):
         for ax in (ax_means, ax_phases, ax_stress, ax_ratio):
             ax.plot([], [], markers[n % len(markers)], color="grey", mfc="none", label=f"ρ window {density:.4g}")
     t = rows[chosen]["T"]
-    for ax in (ax_means, ax_phases, ax_stress, ax_ratio):
+    clipped = {}
+    bars = "16–84 % bootstrap" if all(row["percentile_intervals"] for row in rows) else "±1 sd bootstrap"
+    for ax, key in ((ax_means, "means"), (ax_phases, "phases"), (ax_stress, "stress"), (ax_ratio, "ratio")):
+        clipped[key] = robust_range(ax)
+        ax.plot([], [], " ", label=f"bars: {bars}" + (f"; {clipped[key]} clipped (△▽)" if clipped[key] else ""))
         ax.axvline(t, color="grey", lw=0.6, ls=":")
         ax.set(xlabel="T of the window")
         legend(ax)
@@ -198,6 +263,7 @@ def draw_windows(ax_means, ax_phases, ax_stress, ax_ratio, rows, chosen):
     ax_phases.set(ylabel="ε₂ⱼ", title="(J) phases (Fig 5.6)")
     ax_stress.set(ylabel="Tr⟨v′v′⟩ per particle", title="(K) kinetic stress (Fig 5.7)")
     ax_ratio.set(ylabel="(b₀⁽¹⁾)²/b₀⁽²⁾", title="(L) ratio (Fig 5.9)")
+    return clipped
 
 
 def main():
@@ -220,7 +286,7 @@ def main():
         data["coefficients"] = draw_coefficients(axes[4], g, table, s)
         data["twice"] = draw_neglog(axes[5], g, table)
         data["profiles"] = draw_profiles(axes[6], axes[7], g)
-        draw_windows(*axes[8:12], rows, chosen)
+        data["clipped_bars"] = draw_windows(*axes[8:12], rows, chosen)
         data["windows"] = rows
         fig.suptitle(f"N = {int(f.attrs['particles'])}, ν = {float(f.attrs['area_fraction']):g}, "
                      f"ẽ = {float(f.attrs['restitution']):g}, {text(f.attrs['boundary'])}; rows 1–2: window {chosen} "

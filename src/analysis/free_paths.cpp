@@ -32,6 +32,17 @@ void add(PathHistogram& h, int length_bin, int angle_bin, int angle_bins, double
   h.sum_speed += speed;
 }
 
+// The histogram on bins twice as wide: new bin b holds old bins 2b and 2b + 1 (a path in [l_b, l_b+1)
+// stays in the new bin that contains that interval), the upper half is empty.
+void merge_length_pairs(PathHistogram& h, int length_bins, int angle_bins) {
+  const auto width = static_cast<std::size_t>(angle_bins);
+  std::vector<double> merged(h.counts.size(), 0.0);
+  for (std::size_t old = 0; old < static_cast<std::size_t>(length_bins); ++old) {
+    for (std::size_t a = 0; a < width; ++a) merged[(old / 2) * width + a] += h.counts[old * width + a];
+  }
+  h.counts = std::move(merged);
+}
+
 }  // namespace
 
 UniformBins free_path_angle_bins(int dimension, int bins) {
@@ -77,6 +88,7 @@ void FreePathStatistics<D>::record_path(std::int32_t particle, double time, cons
     const double speed = std::sqrt(norm2(v));
     const double length = speed * dt;
     const int a = angle_bin(v, speed);
+    if (settings_.widen && length >= length_.high) widen_to(length);
     const int l = length_.bin(length);
     add(total_, l, a, settings_.angle_bins, length, speed);
     if (density_ != nullptr) {
@@ -90,6 +102,25 @@ void FreePathStatistics<D>::record_path(std::int32_t particle, double time, cons
     }
   }
   last = {time, velocity_after};
+}
+
+template <int D>
+void FreePathStatistics<D>::widen_to(double length) {
+  while (length >= length_.high && range_doublings_ < kMaxRangeDoublings) {
+    merge_length_pairs(total_, length_.bins, settings_.angle_bins);
+    for (auto* list : {&by_density_, &by_speed_}) {
+      for (PathHistogram& h : *list) merge_length_pairs(h, length_.bins, settings_.angle_bins);
+    }
+    length_.high *= 2.0;
+    ++range_doublings_;
+  }
+}
+
+template <int D>
+double FreePathStatistics<D>::dropped_fraction() const {
+  double dropped = 0.0;
+  for (const double count : total_.overflow) dropped += count;
+  return total_.paths > 0.0 ? dropped / total_.paths : 0.0;
 }
 
 namespace {
@@ -135,6 +166,7 @@ constexpr const char* kLastCollisionName[] = {"", "", "last_collision_t_vx_vy", 
 template <int D>
 void FreePathStatistics<D>::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_integer(prefix + "recording", recording_ ? 1 : 0);
+  archive.put_integer(prefix + "length_range_doublings", range_doublings_);
   std::vector<double> last;
   last.reserve((D + 1) * last_.size());
   for (const LastCollision& c : last_) {
@@ -150,6 +182,10 @@ void FreePathStatistics<D>::save(StateArchive& archive, const std::string& prefi
 template <int D>
 void FreePathStatistics<D>::restore(const StateArchive& archive, const std::string& prefix) {
   recording_ = archive.integer(prefix + "recording") != 0;
+  // Checkpoints written before the range could widen have none: their range is the starting one.
+  const std::string doublings = prefix + "length_range_doublings";
+  range_doublings_ = archive.contains(doublings) ? static_cast<int>(archive.integer(doublings)) : 0;
+  length_.high = std::ldexp(settings_.max_length, range_doublings_);
   const auto& last = archive.get_sized<double>(prefix + kLastCollisionName[D], (D + 1) * last_.size());
   for (std::size_t i = 0; i < last_.size(); ++i) {
     last_[i].t = last[(D + 1) * i];

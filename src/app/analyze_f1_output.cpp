@@ -36,7 +36,19 @@ struct Curves {
   std::vector<double> profile_angle, f_angle_once, f_angle_twice, f_angle_jr;  // at the profile speed
   double at_angle = 0.0, at_speed = 0.0;
   std::vector<double> table, table_error;  // 7 × 4: (ε_2j, b_2j^(0), b_2j^(1), b_2j^(2)), j = 0 … 6
+  // The converged bootstrap replicates: R tables (R × 7 × 4), traces (R × 3: direct, once, twice), ratios.
+  std::vector<double> replicate_tables, replicate_traces, replicate_ratios;
 };
+
+// Appendix B's layout of a sine series, 7 × 4: row j = 0 holds the means b_0^(i) (no phase), row j the
+// phase ε_2j and the amplitudes b_2j^(i).
+std::vector<double> appendix_b_rows(const SineSeries& b) {
+  std::vector<double> rows = {kNaN, b.mean[0], b.mean[1], b.mean[2]};
+  for (int j = 0; j < SineSeries::kHarmonics; ++j) {
+    rows.insert(rows.end(), {b.phase[j], b.amplitude[j][0], b.amplitude[j][1], b.amplitude[j][2]});
+  }
+  return rows;
+}
 
 Curves curves_of(const WindowResult& r, const F1RunDescription& run) {
   const F1Estimate& e = r.estimate;
@@ -88,14 +100,14 @@ Curves curves_of(const WindowResult& r, const F1RunDescription& run) {
     out.f_angle_twice.push_back(r.twice_density(out.at_speed, theta));
     out.f_angle_jr.push_back(r.jenkins_richman.density(out.at_speed, theta));
   }
-  // Appendix B: row j = 0 holds the means b_0^(i) (no phase).
-  const SineSeries& b = e.series;
-  const SineSeries& d = r.errors.series;
-  out.table = {kNaN, b.mean[0], b.mean[1], b.mean[2]};
-  out.table_error = {kNaN, d.mean[0], d.mean[1], d.mean[2]};
-  for (int j = 0; j < SineSeries::kHarmonics; ++j) {
-    out.table.insert(out.table.end(), {b.phase[j], b.amplitude[j][0], b.amplitude[j][1], b.amplitude[j][2]});
-    out.table_error.insert(out.table_error.end(), {d.phase[j], d.amplitude[j][0], d.amplitude[j][1], d.amplitude[j][2]});
+  out.table = appendix_b_rows(e.series);
+  out.table_error = appendix_b_rows(r.errors.series);
+  for (const ReplicateNumbers& replicate : r.errors.replicate_numbers) {
+    const std::vector<double> rows = appendix_b_rows(replicate.series);
+    out.replicate_tables.insert(out.replicate_tables.end(), rows.begin(), rows.end());
+    out.replicate_traces.insert(out.replicate_traces.end(),
+                                {replicate.direct_trace, replicate.once_trace, replicate.twice_trace});
+    out.replicate_ratios.push_back(replicate.ratio);
   }
   return out;
 }
@@ -153,6 +165,11 @@ void write_window(hid_t file, int index, const WindowResult& r, const Curves& c)
   write_dataset(g, "twice_fit_rms", {nt}, c.rms);
   write_dataset(g, "table", {7, 4}, c.table);
   write_dataset(g, "table_error", {7, 4}, c.table_error);
+  if (const auto replicates = static_cast<hsize_t>(c.replicate_ratios.size()); replicates > 0) {
+    write_dataset(g, "bootstrap_table", {replicates, 7, 4}, c.replicate_tables);
+    write_dataset(g, "bootstrap_traces", {replicates, 3}, c.replicate_traces);
+    write_dataset(g, "bootstrap_ratio", {replicates}, c.replicate_ratios);
+  }
   const F1Estimate& e = r.estimate;
   const auto tensor = [](const SecondMoment& m) { return std::vector<double>{m.xx, m.xy, m.yy}; };
   write_dataset(g, "stress_direct", {3}, tensor(e.direct));
@@ -290,6 +307,11 @@ std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDes
                                         {"_profiles.csv", &profiles}}) {
     written.push_back(stem + suffix);
     write_file_atomically(written.back(), *content);
+  }
+  const std::string thesis = thesis_comparison_csv(run.metadata.system, windows);
+  if (!thesis.empty()) {
+    written.push_back(stem + "_thesis.csv");
+    write_file_atomically(written.back(), thesis);
   }
   write_hdf5(out, run, windows, curves);
   written.push_back(out);

@@ -25,13 +25,15 @@ struct ScriptArguments {
   std::int64_t max_points = 200000;
   std::string window;
   std::string data;
+  // `fields`: smoothing and frame averages (2D maps and 3D isosurfaces), passed on as given.
+  std::string smooth, average_frames;
   // `fields` of a 3D run only (density isosurfaces, fields3d.py); passed on as given.
-  std::string level, smooth, average_frames, color_by;
+  std::string level, color_by;
   std::vector<std::string> view, size;
   std::vector<std::string> given;  // the options given on the command line
 };
 
-constexpr const char* kIsosurfaceOptions[] = {"--level", "--smooth", "--average-frames", "--color-by", "--view", "--size"};
+constexpr const char* kIsosurfaceOptions[] = {"--level", "--color-by", "--view", "--size"};
 
 bool was_given(const ScriptArguments& a, const char* option) {
   return std::find(a.given.begin(), a.given.end(), option) != a.given.end();
@@ -85,6 +87,9 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
   std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi)};
   if (std::string_view(kind.name) == "fields") {
     arguments.insert(arguments.end(), {"--group", a.group, "--colormap", a.colormap});
+    for (const auto& [option, value] : {std::pair{"--smooth", &a.smooth}, std::pair{"--average-frames", &a.average_frames}}) {
+      if (!value->empty()) arguments.insert(arguments.end(), {option, *value});
+    }
     if (!a.quantities.empty()) {
       arguments.emplace_back("--quantities");
       arguments.insert(arguments.end(), a.quantities.begin(), a.quantities.end());
@@ -140,8 +145,11 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
       c->add_option("--colormap", a->colormap, "matplotlib colormap (gray: lighter for higher, as the thesis; 3D: coolwarm)")
           ->capture_default_str();
       c->add_option("--level", a->level, "3D runs: the isosurface at this multiple of the field's mean (default 1.5)");
-      c->add_option("--smooth", a->smooth, "3D runs: Gaussian smoothing over this many cells, 0 … 16 (default 1)");
-      c->add_option("--average-frames", a->average_frames, "3D runs: average this many frames ending at --frame (default 1)");
+      c->add_option("--smooth", a->smooth,
+                    "Gaussian smoothing, standard deviation in cells, 0 … 16 (default 0 for 2D maps, 1 for 3D isosurfaces)");
+      c->add_option("--average-frames", a->average_frames,
+                    "Average this many frames ending at --frame (Lees-Edwards 2D maps: in the frame moving with the shear; "
+                    "default 1)");
       c->add_option("--color-by", a->color_by, "3D runs: the field colouring the surface (default velocity_x)");
       c->add_option("--view", a->view, "3D runs: elevation and azimuth in degrees (default 22 -58)")->expected(2);
       c->add_option("--size", a->size, "3D runs: picture WIDTH HEIGHT in pixels (default 1000 800)")->expected(2);

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include <array>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -15,8 +15,8 @@
 #include "app/interrupt_signals.hpp"
 #include "app/output_directory.hpp"
 #include "app/plot_run_picture.hpp"
+#include "app/run_console.hpp"
 #include "driver/run_session.hpp"
-#include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/fields_file.hpp"
@@ -215,45 +215,6 @@ std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const
   return session;
 }
 
-// Rough grains, walls and gravity (issue 15), one line each when present.
-void print_grains_walls_gravity(const RunConfig& config) {
-  const SystemParams& s = config.system;
-  const int d = s.dimension;
-  const RoughnessParams& r = s.roughness;
-  if (r.rough) {
-    fmt::print("rough grains: β = {}, q = {} (I = q m σ²/4), μ = {}{}\n", r.tangential_restitution, r.inertia_factor,
-               std::isfinite(r.friction) ? fmt::format("{}", r.friction) : "∞ (no Coulomb limit)",
-               config.initial_from ? std::string{} : fmt::format("; initial T_rot = {}", config.initial_rotational_temperature));
-  }
-  const auto vector_text = [d](const std::array<double, 3>& v) {
-    return d == 3 ? fmt::format("({}, {}, {})", v[0], v[1], v[2]) : fmt::format("({}, {})", v[0], v[1]);
-  };
-  const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
-  for (std::size_t axis = 0; axis < 3; ++axis) {
-    if (!s.walls[axis]) continue;
-    const WallParams& lower = s.wall[2 * axis];
-    const WallParams& upper = s.wall[2 * axis + 1];
-    const char name = "xyz"[axis];
-    fmt::print("walls at {} = 0 (e_w = {}, β_w = {}, velocity {}) and {} = {} (e_w = {}, β_w = {}, velocity {})\n", name,
-               lower.restitution, lower.tangential_restitution, vector_text(lower.velocity), name, lengths[axis],
-               upper.restitution, upper.tangential_restitution, vector_text(upper.velocity));
-  }
-  if (s.has_gravity()) fmt::print("gravity g = {}\n", vector_text(s.gravity));
-}
-
-void print_header(const RunConfig& config) {
-  const SystemParams& s = config.system;
-  const char* boundary = config.lees_edwards ? "Lees–Edwards" : s.has_walls() ? "walled" : "periodic";
-  const double u = config.lees_edwards ? s.shear_velocity : wall_shear_velocity(s);
-  fmt::print("granule {}: {}{}, N = {}, ν = {:.4g}, σ = {:.6g}{}, e = {}, {} box {} × {}{}{}\n", kVersion,
-             s.roughness.rough ? "rough " : "", s.dimension == 3 ? "spheres" : "disks", s.particles, config.packing_fraction,
-             s.diameter, config.diameters.monodisperse() ? "" : " (largest)", s.restitution, boundary, s.length_x, s.length_y,
-             s.dimension == 3 ? fmt::format(" × {}", s.length_z) : std::string{},
-             config.lees_edwards || s.walls[1] ? fmt::format(", U = {}", u) : std::string{});
-  print_grains_walls_gravity(config);
-  if (config.equilibrate > 0.0) fmt::print("elastic pre-run: {} collisions per particle\n", config.equilibrate);
-}
-
 // The mean free time per disk over the last sampled interval (each collision involves two disks).
 template <int D>
 double mean_free_time(const RunSession<D>& session) {
@@ -286,11 +247,14 @@ template <int D>
 int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& grid) {
   const bool resume = !options.resume_dir.empty();
   const std::string out = resume ? options.resume_dir : options.out_dir;
+  // Files modified from here on are this invocation's (less a margin for the file system's coarse
+  // clock, which may stamp a file a tick before now()).
+  const auto since = std::filesystem::file_time_type::clock::now() - std::chrono::milliseconds(50);
   try {
     std::unique_ptr<RunSession<D>> session = !resume              ? new_session<D>(config, grid, options)
                                              : options.from_frame ? from_frame_session<D>(config, grid, out, *options.from_frame)
                                                                   : resumed_session<D>(config, grid, out);
-    print_header(config);
+    print_header(config, !resume && options.config_path.empty(), options.overrides.size());
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
     const Simulation<D>& sim = session->simulation();
@@ -302,11 +266,6 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
                     prerun > 0 ? fmt::format(" (+ {} in the elastic pre-run)", prerun) : std::string{},
                     summary["wall_seconds"].get<double>(), summary["collisions_per_second"].get<double>());
     const std::int64_t frames = session->snapshot_frames();
-    const std::string outputs =
-        fmt::format("outputs in {}: config.toml, checkpoint.h5, summary.json{}\n", out,
-                    frames > 0 ? fmt::format(", timeseries.csv, snapshots.h5 ({} frames){}", frames,
-                                             session->measurements_enabled() ? ", fields.h5 and collision statistics as configured" : "")
-                               : std::string{});
     const std::string collapse = reason == StopReason::kInelasticCollapse ? collapse_report(*session, out) : std::string{};
     session.reset();  // the picture reads the last frame back: of 10^8 disks, not beside the engine
     try {
@@ -316,7 +275,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
       fmt::print(stderr, "granule run: warning: could not draw the configuration picture: {}\n", error.what());
     }
-    fmt::print("{}{}", finished, outputs);
+    fmt::print("{}{} ({} snapshot frames)\n", finished, files_written_text(out, since), frames);
     if (reason == StopReason::kInterrupted) {
       const int signal = InterruptSignals::received();
       fmt::print(stderr, "granule run: interrupted by signal {}: checkpoint written; continue with\n  granule run --resume {}\n",
@@ -355,7 +314,7 @@ void add_run_command(CLI::App& root) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* command = root.add_subcommand(
       "run", "Run a simulation from a TOML config (or the built-in example: free cooling of a scaled-down "
-             "System II of Tan 1995, N = 40000, ν = 0.05, e = 0.6).");
+             "System II of Tan 1995, N = 40000, ν = 0.05, e = 0.6, with the TC model t_c = 1e-7).");
   command->add_option("config", options->config_path, "TOML configuration file (keys: see README.md)")
       ->check(CLI::ExistingFile);
   command->add_option("--set", options->overrides, "Override a config key, e.g. --set system.restitution=0.8 (repeatable)");

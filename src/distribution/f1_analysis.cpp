@@ -213,6 +213,8 @@ WindowResult analyse_window(const WindowSamples& w, const F1Options& options) {
     if (!fit_failures(replicate).empty()) continue;  // a failed fit is no sample of the spread
     spread.add(error_quantities(replicate));
     ++r.errors.converged_replicates;
+    r.errors.replicate_numbers.push_back({replicate.series, replicate.direct.trace(), replicate.once_integrals.moment.trace(),
+                                          replicate.twice_integrals.moment.trace(), replicate.ratio});
   }
   r.errors.replicates = options.bootstrap;
   if (options.bootstrap > 0) {

@@ -58,12 +58,20 @@ struct F1Estimate {
   double ratio = 0.0;             // (b_0^(1))² / b_0^(2)  (Fig 5.9)
 };
 
+// The numbers of one converged bootstrap replicate that the errors summarise, kept so that plots can
+// draw percentile intervals (robust to a few wild replicates) instead of standard deviations.
+struct ReplicateNumbers {
+  SineSeries series;
+  double direct_trace = 0.0, once_trace = 0.0, twice_trace = 0.0, ratio = 0.0;
+};
+
 // Standard deviations over the bootstrap replicates, same layout as the estimate's numbers.
 struct F1Errors {
   SineSeries series;  // mean, amplitude, phase hold standard deviations
   double direct_trace = 0.0, once_trace = 0.0, twice_trace = 0.0, ratio = 0.0;
   int replicates = 0;
   int converged_replicates = 0;  // replicates whose three fits all converged: the only ones used
+  std::vector<ReplicateNumbers> replicate_numbers;  // one per converged replicate
 };
 
 struct WindowResult {

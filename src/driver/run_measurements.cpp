@@ -50,7 +50,8 @@ void RunMeasurements<D>::set_up(Simulation<D>& sim) {
     if (k.free_paths) {
       // Attached from the start: a path's beginning is the disk's previous collision.
       paths_ = std::make_unique<FreePathStatistics<D>>(
-          s.particles, FreePathSettings{k.length_bins, k.angle_bins, k.max_length, k.density_windows, k.speed_windows},
+          s.particles, FreePathSettings{k.length_bins, k.angle_bins, k.max_length, k.widen_max_length, k.density_windows,
+                                       k.speed_windows},
           density_.get());
       sim.add_observer(paths_.get());
     }
@@ -249,7 +250,11 @@ nlohmann::json RunMeasurements<D>::finish(const Simulation<D>& sim) {
     const FreePathSummary p = summarize_free_paths(paths_->total(), paths_->length_bins(), paths_->angle_bins(), D);
     j["free_paths"] = {{"paths", p.paths},           {"mean_length", p.mean_length},  {"l0_matched_eq_3_36", p.l0_matched},
                        {"alpha0_eq_3_24", p.alpha0}, {"lbar_eq_3_24", p.lbar},        {"ks_matched", p.ks_matched},
-                       {"ks_exponential", p.ks_exponential}};
+                       {"ks_exponential", p.ks_exponential},
+                       // The histogram's range, widened from collisions.max_length as long paths came.
+                       {"histogram_max_length", paths_->length_bins().high},
+                       {"histogram_range_doublings", paths_->range_doublings()},
+                       {"dropped_fraction", paths_->dropped_fraction()}};
     if constexpr (D == 2) {
       j["free_paths"]["thesis_mean_free_path"] = s.length_x * s.length_y / (2.0 * static_cast<double>(s.particles) * s.diameter);
     } else {

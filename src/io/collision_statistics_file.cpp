@@ -110,6 +110,8 @@ void write_paths(hid_t file, const FreePathStatistics<D>& paths, const Collision
     }
   }
   write_vector(g, "length_edges", edges(paths.length_bins()));
+  write_double(g, "initial_max_length", paths.settings().max_length);
+  write_double(g, "dropped_fraction", paths.dropped_fraction());
   write_vector(g, "angle_edges", edges(paths.angle_bins()));
   Handle total = group(g, "total");
   write_path_summary(total.get(), paths.total(), paths);

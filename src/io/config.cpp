@@ -179,6 +179,8 @@ RunConfig resolve(const toml::table& root) {
   // Boltzmann l = 1/(√2 π n σ²) in 3D.  The bin width must stay a normal number, and the range finite.
   const NumberRange lengths{kMinMaxLengthOverDiameter * s.diameter,
                             kMaxMaxLengthOverBox * std::max({s.length_x, s.length_y, s.dimension == 3 ? s.length_z : 0.0})};
+  // A range the user gives is kept (longer paths overflow and are reported); the default one widens.
+  k.widen_max_length = !in.has("collisions.max_length");
   k.max_length = in.number("collisions.max_length", lengths,
                            fmt::format(" ({:g} σ to {:g} box lengths)", kMinMaxLengthOverDiameter, kMaxMaxLengthOverBox))
                      .value_or(s.dimension == 3 ? 10.0 * s.length_x * s.length_y * s.length_z /
@@ -299,10 +301,13 @@ std::string to_toml(const RunConfig& c) {
   };
   out += fmt::format("\n[collisions]\nimpact_parameters = {}\nfree_paths = {}\nwindow_collisions_per_particle = {:.17g}\n"
                      "from_collisions_per_particle = {:.17g}\ndensity_windows = {}\nspeed_windows = {}\nimpact_bins = {}\n"
-                     "length_bins = {}\nangle_bins = {}\nmax_length = {:.17g}\n",
+                     "length_bins = {}\nangle_bins = {}\n",
                      k.impact_parameters, k.free_paths, k.window_collisions_per_particle, k.from_collisions_per_particle,
-                     windows(k.density_windows), windows(k.speed_windows), k.impact_bins, k.length_bins, k.angle_bins,
-                     k.max_length);
+                     windows(k.density_windows), windows(k.speed_windows), k.impact_bins, k.length_bins, k.angle_bins);
+  // The default range is left out, so that reading this file back gives the default again: a range
+  // that widens (a written number would be read as a fixed range).
+  out += k.widen_max_length ? fmt::format("# max_length: default {:.17g}, widened as long paths come\n", k.max_length)
+                            : fmt::format("max_length = {:.17g}\n", k.max_length);
   return out;
 }
 

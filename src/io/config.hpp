@@ -37,6 +37,7 @@ struct CollisionStatisticsConfig {
   int length_bins = 100;
   int angle_bins = 72;
   double max_length = 0.0;  // resolved (default: 10 l with l = Lx Ly / (2 N σ), §3.1.2)
+  bool widen_max_length = true;  // the default range widens as long paths come; a given one is fixed
 };
 
 // [initial] from = "DIR", frame = K: start from frame K of another run's snapshots.h5 (default its

@@ -129,6 +129,15 @@ with h5py.File(f1) as f, open(f1.with_name("f1_windows.csv")) as handle:
             check(abs(w["ratio"] - wt[0, 2] ** 2 / wt[0, 3]) < 1e-9 * abs(w["ratio"]) + 1e-15,
                   f"{name}: ratio ≠ (b₀⁽¹⁾)²/b₀⁽²⁾ of the table")
             check(w["T"] == h.attrs["temperature"], f"{name}: T")
+            # Robust bars: the 16th-84th percentiles of the replicates the file keeps (converged ones),
+            # which the sd of the same replicates must match for this well-behaved spread within 2x.
+            replicates = h["bootstrap_ratio"][:]
+            check(len(replicates) == h.attrs["bootstrap_converged_replicates"], f"{name}: replicates kept")
+            low, high = np.percentile(replicates, [16, 84])
+            check(np.allclose(w["ratio_interval"], [low, high], rtol=1e-12), f"{name}: ratio interval = percentiles")
+            check(np.std(replicates, ddof=1) == 0 or abs(np.std(replicates, ddof=1) / h.attrs["ratio_error"] - 1) < 1e-9,
+                  f"{name}: the file's error is the sd of the kept replicates")
+        check(set(data["clipped_bars"]) == {"means", "phases", "stress", "ratio"}, f"{label}: clipped bars counted")
 
 # 3. Bad input: exit code 2, a message naming the option, and neither the PNG nor the sidecar.
 bad_png, bad_json = WORK / "bad.png", WORK / "bad.json"

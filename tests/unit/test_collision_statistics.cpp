@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "analysis/collision_statistics_fits.hpp"
 #include "analysis/collisional_stress.hpp"
@@ -90,6 +91,44 @@ TEST(FreePathStatistics, PathIsTheFlightSinceThePreviousCollision) {
   EXPECT_DOUBLE_EQ(paths.total().sum_length, 5.0);
   EXPECT_DOUBLE_EQ(paths.total().sum_speed, 2.0);
   EXPECT_DOUBLE_EQ(paths.total().counts[5 * 4 + 1], 1.0);  // length bin 5, angle bin 1 (π/2 ≤ α < π)
+}
+
+// Paths longer than the starting range widen it (bins merged pairwise) instead of overflowing: the
+// histogram is then the one a fixed range of the final width would have built, path for path, and
+// the windows follow.  Lengths 0.05 … 37 with a starting range of 1 end on [0, 64) (6 doublings).
+TEST(FreePathStatistics, RangeWidensSoThatNoPathIsDropped) {
+  const auto histogram_of = [](double max_length) {
+    FreePathSettings settings;
+    settings.length_bins = 10;
+    settings.angle_bins = 4;
+    settings.max_length = max_length;
+    settings.speed_windows = {{0.0, 100.0}};
+    FreePathStatistics<2> paths(2, settings, nullptr);
+    paths.start();
+    double t = 0.0;
+    for (const double length : {0.05, 0.9, 3.7, 1.2, 37.0, 0.31, 12.5, 6.4, 63.9}) {
+      CollisionRecord<2> r = record(t, 0, 1, {}, {1, 0}, {1, 0});
+      r.first_velocity_after = {1.0, 0.0};  // both fly at unit speed for `length`
+      r.second_velocity_after = {0.0, -1.0};
+      paths.on_collision(r);
+      t += length;
+    }
+    paths.on_collision(record(t, 0, 1, {}, {1, 0}, {1, 0}));
+    return std::tuple{paths.total(), paths.by_speed()[0], paths.length_bins().high, paths.range_doublings()};
+  };
+  const auto [total, window, range, doublings] = histogram_of(1.0);
+  const auto [reference, reference_window, reference_range, none] = histogram_of(64.0);
+  EXPECT_DOUBLE_EQ(range, 64.0);
+  EXPECT_EQ(doublings, 6);
+  EXPECT_EQ(none, 0);
+  EXPECT_EQ(total.counts, reference.counts);
+  EXPECT_EQ(window.counts, reference_window.counts);
+  EXPECT_EQ(total.overflow, std::vector<double>(4, 0.0));
+  EXPECT_DOUBLE_EQ(reference_range, 64.0);
+  EXPECT_DOUBLE_EQ(total.paths, 18.0);  // 9 flights of 2 disks
+  double binned = 0.0;
+  for (const double c : total.counts) binned += c;
+  EXPECT_DOUBLE_EQ(binned, total.paths);
 }
 
 TEST(FreePathSummary, MatchedFormRecoversGammaHalfSamplesAndRejectsTheExponential) {

@@ -109,6 +109,7 @@ FreePathSettings settings_for(double lbar) {
   s.length_bins = 100;
   s.angle_bins = 72;
   s.max_length = 5.0 * lbar;  // ten mean lengths, as the run's default (⟨l⟩ = l̄/2)
+  s.widen = false;            // the fits are tested on a histogram of known bins
   return s;
 }
 
