@@ -1,0 +1,80 @@
+"""granule reproduce: `validation --scale tiny` writes report.md, a self-contained report.html (every
+picture inline, no external resource), claims.csv and claims.json that agree with each other; every
+verdict follows from its numbers by the documented rule (recomputed here independently); a second
+call skips the finished runs; a study not built yet and an unknown study are refused with a clear
+message and nothing written."""
+import csv
+import json
+import math
+import re
+
+from harness import WORK, check, finish, granule
+
+VERDICTS = {"agrees", "disagrees", "not resolvable at this scale"}
+
+
+def verdict(claim):
+    """The rule of docs/reproduce.md, written anew from its words."""
+    e, m, s, t, kind = claim["expected"], claim["measured"], claim["error"], claim["tolerance"], claim["tolerance_kind"]
+    if claim["unresolvable"] or m is None or e is None:
+        return "not resolvable at this scale"
+    if kind == "relative":
+        low, high = e - t * abs(e), e + t * abs(e)
+    elif kind == "absolute":
+        low, high = e - t, e + t
+    else:
+        low, high = sorted((e / t, e * t))
+    two_sigma = 2 * abs(s) if s is not None else 0.0
+    if two_sigma > high - low:
+        return "not resolvable at this scale"
+    return "agrees" if low - two_sigma <= m <= high + two_sigma else "disagrees"
+
+
+out = WORK / "report"
+first = granule("reproduce", "validation", "--scale", "tiny", "--out", out, "--jobs", "2")
+check(first.returncode == 0, f"reproduce validation exited {first.returncode}: {first.stderr[-2000:]}")
+for name in ("report.md", "report.html", "claims.csv", "claims.json"):
+    check((out / name).is_file(), f"{name} missing")
+check("claims (tiny scale):" in first.stdout, "no claim summary on the terminal")
+
+document = json.loads((out / "claims.json").read_text())
+claims = [c for s in document["studies"] for c in s["claims"]]
+check(len(claims) >= 8, f"only {len(claims)} claims")
+check(len({c["id"] for c in claims}) == len(claims), "claim ids are not unique")
+for c in claims:
+    check(c["verdict"] in VERDICTS, f"{c['id']}: verdict {c['verdict']!r}")
+    check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
+    check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
+    check(c["measured"] is not None or c["verdict"] != "agrees", f"{c['id']}: agrees without a number")
+
+with open(out / "claims.csv", newline="") as f:
+    rows = list(csv.DictReader(f))
+check([r["id"] for r in rows] == [c["id"] for c in claims], "claims.csv and claims.json list different claims")
+for r, c in zip(rows, claims):
+    check(r["verdict"] == c["verdict"], f"{r['id']}: csv verdict {r['verdict']} vs json {c['verdict']}")
+    expected = float(r["expected"])
+    check(math.isclose(expected, c["expected"], rel_tol=1e-12), f"{r['id']}: csv expected {expected} vs json {c['expected']}")
+
+page = (out / "report.html").read_text()
+images = re.findall(r'<img[^>]*src="([^"]*)"', page)
+check(len(images) >= 2, f"{len(images)} pictures in report.html")
+check(all(src.startswith("data:image/png;base64,") for src in images), "a picture of report.html is not inline")
+check(not re.search(r'(src|href)="(https?:|//|file:)', page), "report.html refers to an external resource")
+check("agree" in page and "Henderson" in page, "report.html lacks the claims table")
+markdown = (out / "report.md").read_text()
+check(all(c["id"].split(".")[0] in markdown or c["statement"][:20] in markdown for c in claims), "report.md lacks claims")
+
+again = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
+check(again.returncode == 0, f"second call exited {again.returncode}")
+check(again.stdout.count("skipped") >= 5 and "finished in" not in again.stdout, "second call ran points again")
+
+for study, message in (("chapter4", "not yet reproduced"), ("chapter9", "unknown study")):
+    target = WORK / study
+    refused = granule("reproduce", study, "--scale", "tiny", "--out", target)
+    check(refused.returncode == 2, f"reproduce {study} exited {refused.returncode}")
+    check(message in refused.stderr, f"reproduce {study}: {refused.stderr!r}")
+    check(not target.exists(), f"reproduce {study} wrote {target}")
+bad_scale = granule("reproduce", "validation", "--scale", "huge", "--out", WORK / "huge")
+check(bad_scale.returncode == 2 and "--scale huge" in bad_scale.stderr, f"--scale huge: {bad_scale.stderr!r}")
+
+finish()
