@@ -39,7 +39,7 @@ def main():
     ax.set_xlabel(spec.get("x_label", ""))
     ax.set_ylabel(spec.get("y_label", ""))
     ax.set_title(spec.get("title", ""), fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
+    ax.grid(True, which="major", alpha=0.3)
     legend(ax)
     save(fig, args.out, args.dpi)
 

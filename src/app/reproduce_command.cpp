@@ -112,7 +112,7 @@ bool run_groups(const std::vector<GroupRun>& groups, const GroupRunner& run_all)
   return InterruptSignals::received() == 0;
 }
 
-GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& complete) {
+GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& complete, double& run_seconds) {
   const sweep::SweepTally tally = sweep::write_results(g.dir, g.spec);
   complete = complete && tally.complete();
   tally_line = fmt::format("{}/{}: {}", g.study->name, g.group, sweep::tally_line(tally, g.dir));
@@ -120,7 +120,9 @@ GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& comple
   for (const sweep::SweepPoint& point : g.spec.points) {
     PointOutputs p;
     p.name = point.name;
-    p.status = sweep::current_record(g.dir, point).status;
+    const sweep::PointRecord record = sweep::current_record(g.dir, point);
+    p.status = record.status;
+    run_seconds += record.seconds;
     for (const sweep::PointSetting& s : point.settings) p.settings.emplace_back(s.key, s.readable);
     const fs::path run = g.dir.run(point);
     if (fs::exists(run / "timeseries.csv")) p.samples = read_timeseries((run / "timeseries.csv").string());
@@ -137,12 +139,8 @@ nlohmann::json figure_json(const Figure& f) {
   for (const FigureSeries& s : f.series) {
     series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}, {"error", s.error}, {"line", s.line}});
   }
-  return {{"title", f.thesis_figure == "—" ? f.name : f.thesis_figure},
-          {"x_label", f.x_label},
-          {"y_label", f.y_label},
-          {"log_x", f.log_x},
-          {"log_y", f.log_y},
-          {"series", series}};
+  return {{"title", f.thesis_figure}, {"x_label", f.x_label}, {"y_label", f.y_label},
+          {"log_x", f.log_x},         {"log_y", f.log_y},     {"series", series}};
 }
 
 // figures/<name>.json (the numbers drawn) and figures/<name>.png; a figure that fails to draw is
@@ -168,9 +166,9 @@ std::string command_line(const ReproduceOptions& o) {
 
 // Rank 0 (or the only process): read, judge, draw and write.
 int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>& groups, Scale scale, const ReproduceOptions& o,
-           double seconds) {
+           const std::function<double()>& elapsed) {
   const fs::path out = o.out;
-  Report r{scale_name(scale), command_line(o), seconds, {}};
+  Report r{scale_name(scale), command_line(o), 0.0, 0.0, {}};
   bool complete = true;
   for (const Study* study : studies) {
     StudySection section{study, {}, {}};
@@ -179,7 +177,7 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
       for (const GroupRun& g : groups) {
         if (g.study != study) continue;
         std::string line;
-        outputs[g.group] = read_group(g, line, complete);
+        outputs[g.group] = read_group(g, line, complete, r.run_seconds);
         section.run_lines.push_back(line);
       }
       fmt::print("reproduce: analysing {}\n", study->name);
@@ -193,7 +191,7 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
     }
     r.sections.push_back(std::move(section));
   }
-  r.wall_seconds = seconds;
+  r.wall_seconds = elapsed();  // runs, analyses and figures of this call
   write_report(out, r);
   fmt::print("\nclaims ({} scale):\n", r.scale);
   for (const std::string& line : claim_summary_lines(r)) fmt::print("  {}\n", line);
@@ -210,7 +208,9 @@ int reproduce(const ReproduceOptions& o) {
     const Scale scale = parse_scale(o.scale);
     const std::vector<const Study*> studies = selected_studies(o.what);
     const std::vector<GroupRun> groups = planned_groups(studies, scale, o.out);
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const std::function<double()> elapsed = [&] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     if (o.mpi) {
 #ifdef GRANULE_HAVE_MPI
       if (o.jobs != 1)
@@ -223,7 +223,7 @@ int reproduce(const ReproduceOptions& o) {
       mpi.broadcast(0);  // every directory exists before any rank runs a point
       const bool whole = run_groups(groups, [&](const sweep::SweepRun& run) { sweep::run_points_over_mpi(run, world); });
       const int code = world.rank != 0 ? kExitSuccess
-                       : whole         ? report(studies, groups, scale, o, elapsed())
+                       : whole         ? report(studies, groups, scale, o, elapsed)
                                        : kExitInterruptedBase + InterruptSignals::received();
       return mpi.broadcast(code);
 #else
@@ -241,7 +241,7 @@ int reproduce(const ReproduceOptions& o) {
       fmt::print(stderr, "granule reproduce: interrupted; the same command resumes the runs\n");
       return kExitInterruptedBase + InterruptSignals::received();
     }
-    return report(studies, groups, scale, o, elapsed());
+    return report(studies, groups, scale, o, elapsed);
   } catch (const CommandFailure& failure) {
     fmt::print(stderr, "granule reproduce: error: {}\n", failure.message);
     return failure.code;

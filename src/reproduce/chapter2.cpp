@@ -208,8 +208,12 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
   for (const DiagnosticsSample& s : first.samples) {
     against_c.x.push_back(s.c);
     against_c.y.push_back(s.temperature / start_sample.temperature);
-    exponential.x.push_back(s.c);
-    exponential.y.push_back(std::exp(-theory::inelasticity(system.restitution) * s.c));
+    // The exponential only down to a decade below the data, which it would otherwise squash.
+    const double haff_c = std::exp(-theory::inelasticity(system.restitution) * s.c);
+    if (haff_c > 0.1 * first.samples.back().temperature / start_sample.temperature) {
+      exponential.x.push_back(s.c);
+      exponential.y.push_back(haff_c);
+    }
     if (s.t > 0.0) {
       against_t.x.push_back(s.t);
       against_t.y.push_back(s.temperature / start_sample.temperature);

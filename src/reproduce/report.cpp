@@ -20,7 +20,8 @@ std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x
 
 std::string measured_text(const Claim& c) {
   if (!std::isfinite(c.measured)) return "—";
-  return std::isfinite(c.error) ? fmt::format("{} ± {}", number(c.measured), number(c.error)) : number(c.measured);
+  // The error to two digits: its own uncertainty is larger than that.
+  return std::isfinite(c.error) ? fmt::format("{} ± {:.2g}", number(c.measured), c.error) : number(c.measured);
 }
 
 // What the verdict rests on: why it cannot be decided, or how it was measured.
@@ -99,6 +100,11 @@ std::string tally_text(const Report& report) {
                      t.agrees, t.disagrees, t.unresolvable);
 }
 
+std::string time_text(const Report& report) {
+  return fmt::format("this call took {:.0f} s of wall time; the runs took {:.0f} s in all (summed over runs)",
+                     report.wall_seconds, report.run_seconds);
+}
+
 const char* kColumns[] = {"claim", "where", "expected", "Granule", "tolerance", "why this tolerance", "verdict", "checked"};
 
 std::vector<std::string> claim_cells(const Claim& c) {
@@ -108,10 +114,9 @@ std::vector<std::string> claim_cells(const Claim& c) {
 
 std::string markdown(const Report& report) {
   std::string md = fmt::format(
-      "# Granule reproduces Tan (1995): report\n\nScale `{}`; {}; {:.0f} s of wall time.\n\n"
+      "# Granule reproduces Tan (1995): report\n\nScale `{}`; {}.\n\n"
       "Repeat with `{}` (finished runs are skipped).\n\n**{}.**\n",
-      report.scale, "every claim below is judged from its numbers alone (docs/reproduce.md)", report.wall_seconds, report.command,
-      tally_text(report));
+      report.scale, time_text(report), report.command, tally_text(report));
   for (const StudySection& s : report.sections) {
     md += fmt::format("\n## {} — {}\n\n{}\n\n", s.study->name, s.study->title, s.study->thesis_part);
     if (!s.study->built()) {
@@ -159,9 +164,11 @@ std::string verdict_class(Verdict v) {
 std::string html(const fs::path& dir, const Report& report) {
   std::string page = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Granule reproduces Tan (1995)</title>"
-      "<style>{}</style></head><body>\n<h1>Granule reproduces Tan (1995)</h1>\n<p>Scale <code>{}</code>, {:.0f} s of wall time. "
-      "Repeat with <code>{}</code>.</p>\n<p class=\"summary\">{}.</p>\n",
-      kStyle, html_escape(report.scale), report.wall_seconds, html_escape(report.command), html_escape(tally_text(report)));
+      "<style>{}</style></head><body>\n<h1>Granule reproduces Tan (1995)</h1>\n<p>Scale <code>{}</code>; {}. "
+      "Repeat with <code>{}</code>. Every verdict follows from the numbers in its row (docs/reproduce.md).</p>\n"
+      "<p class=\"summary\">{}.</p>\n",
+      kStyle, html_escape(report.scale), html_escape(time_text(report)), html_escape(report.command),
+      html_escape(tally_text(report)));
   for (const StudySection& s : report.sections) {
     page += fmt::format("<h2>{} — {}</h2>\n<p>{}</p>\n", html_escape(s.study->name), html_escape(s.study->title),
                         html_escape(s.study->thesis_part));
@@ -228,7 +235,10 @@ std::string claims_csv(const Report& report) {
 nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 std::string claims_json(const Report& report) {
-  nlohmann::json j = {{"scale", report.scale}, {"command", report.command}, {"wall_seconds", report.wall_seconds}};
+  nlohmann::json j = {{"scale", report.scale},
+                      {"command", report.command},
+                      {"wall_seconds", report.wall_seconds},
+                      {"run_seconds", report.run_seconds}};
   nlohmann::json studies = nlohmann::json::array();
   const char* kinds[] = {"relative", "absolute", "factor"};
   for (const StudySection& s : report.sections) {

@@ -19,8 +19,9 @@ struct StudySection {
 
 struct Report {
   std::string scale;
-  std::string command;  // the command line, to repeat the report
-  double wall_seconds = 0.0;
+  std::string command;        // the command line, to repeat the report
+  double wall_seconds = 0.0;  // of this call (runs that finished before are skipped)
+  double run_seconds = 0.0;   // the runs' own wall times, summed (their last attempts)
   std::vector<StudySection> sections;
 };
 

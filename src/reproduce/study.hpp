@@ -51,7 +51,7 @@ struct FigureSeries {
 
 struct Figure {
   std::string name;           // file stem: DIR/figures/<name>.png
-  std::string thesis_figure;  // "Fig 2.5(F)", or "—" for the validation
+  std::string thesis_figure;  // "Fig 2.5(F)", or "Validation" for a figure outside the thesis
   std::string caption;        // what it shows (the thesis's caption where it has one)
   std::string x_label, y_label;
   bool log_x = false, log_y = false;

@@ -132,7 +132,7 @@ void add_elastic_claims(const GroupOutputs& group, StudyOutcome& out) {
   }
   out.figures.push_back(
       Figure{.name = "validation_henderson",
-             .thesis_figure = "—",
+             .thesis_figure = "Validation",
              .caption = "Equation of state of elastic hard disks: Granule's virial pressure against Henderson's formula",
              .x_label = "area fraction ν",
              .y_label = "Z = P/(nT)",
@@ -182,7 +182,7 @@ void add_cooling_claims(const GroupOutputs& group, StudyOutcome& out) {
                   r.count));
   out.claims.push_back(claim);
   out.figures.push_back(Figure{.name = "validation_haff",
-                               .thesis_figure = "—",
+                               .thesis_figure = "Validation",
                                .caption = "Homogeneous cooling: √(T(0)/T) − 1 against t/t0, Haff's law is the diagonal",
                                .x_label = "t / t0",
                                .y_label = "√(T(0)/T(t)) − 1",
