@@ -98,14 +98,16 @@ using GroupRunner = std::function<void(const sweep::SweepRun&)>;
 
 // Runs every group's points (skipping finished ones) with `run_all`.  Returns false when a signal
 // stopped it.
-bool run_groups(const std::vector<GroupRun>& groups, const GroupRunner& run_all) {
+bool run_groups(const std::vector<GroupRun>& groups, const GroupRunner& run_all, bool announce) {
   std::size_t total = 0;
   for (const GroupRun& g : groups) total += g.spec.points.size();
   std::size_t done = 0;
   for (const GroupRun& g : groups) {
     if (InterruptSignals::received() != 0) return false;
-    fmt::print("reproduce: [{}/{} runs] {}/{}: {} point(s)\n", done, total, g.study->name, g.group, g.spec.points.size());
-    std::fflush(stdout);
+    if (announce) {
+      fmt::print("reproduce: [{}/{} runs] {}/{}: {} point(s)\n", done, total, g.study->name, g.group, g.spec.points.size());
+      std::fflush(stdout);
+    }
     run_all(sweep::SweepRun{own_executable(), g.dir, &g.spec, InterruptSignals::flag()});
     done += g.spec.points.size();
   }
@@ -221,7 +223,13 @@ int reproduce(const ReproduceOptions& o) {
         for (const GroupRun& g : groups) sweep::prepare_sweep_directory(g.dir, g.spec);
       }
       mpi.broadcast(0);  // every directory exists before any rank runs a point
-      const bool whole = run_groups(groups, [&](const sweep::SweepRun& run) { sweep::run_points_over_mpi(run, world); });
+      // Every rank ends a group before any starts the next: a worker's first request of the next
+      // group must not reach rank 0 while it still hands out the points of this one.
+      const GroupRunner over_ranks = [&](const sweep::SweepRun& run) {
+        sweep::run_points_over_mpi(run, world);
+        mpi.broadcast(0);
+      };
+      const bool whole = run_groups(groups, over_ranks, world.rank == 0);
       const int code = world.rank != 0 ? kExitSuccess
                        : whole         ? report(studies, groups, scale, o, elapsed)
                                        : kExitInterruptedBase + InterruptSignals::received();
@@ -237,7 +245,7 @@ int reproduce(const ReproduceOptions& o) {
       for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = k;
       sweep::run_points(run, indices, o.jobs, true);
     };
-    if (!run_groups(groups, local)) {
+    if (!run_groups(groups, local, true)) {
       fmt::print(stderr, "granule reproduce: interrupted; the same command resumes the runs\n");
       return kExitInterruptedBase + InterruptSignals::received();
     }

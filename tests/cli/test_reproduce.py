@@ -6,9 +6,12 @@ message and nothing written."""
 import csv
 import json
 import math
+import os
 import re
+import shutil
+import subprocess
 
-from harness import WORK, check, finish, granule
+from harness import GRANULE, WORK, check, finish, granule
 
 VERDICTS = {"agrees", "disagrees", "not resolvable at this scale"}
 
@@ -67,6 +70,24 @@ check(all(c["id"].split(".")[0] in markdown or c["statement"][:20] in markdown f
 again = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
 check(again.returncode == 0, f"second call exited {again.returncode}")
 check(again.stdout.count("skipped") >= 5 and "finished in" not in again.stdout, "second call ran points again")
+
+# Over MPI ranks (three: rank 0 hands out, two run): the same runs, hence the same numbers.
+mpi_out = WORK / "report_mpi"
+probe = granule("reproduce", "validation", "--scale", "tiny", "--out", WORK / "probe", "--mpi")
+if "built without MPI" in probe.stderr or shutil.which("mpirun") is None:
+    print("SKIPPED: reproduce --mpi (granule built without MPI or no mpirun)")
+else:
+    shutil.rmtree(WORK / "probe", ignore_errors=True)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    mpi = subprocess.run(["mpirun", "--oversubscribe", "-n", "3", GRANULE, "reproduce", "validation", "--scale", "tiny", "--out",
+                          str(mpi_out), "--mpi"], capture_output=True, text=True, timeout=300, env=env)
+    check(mpi.returncode == 0, f"reproduce --mpi exited {mpi.returncode}: {mpi.stderr[-2000:]}")
+    if mpi.returncode == 0:
+        with open(mpi_out / "claims.csv", newline="") as f:
+            mpi_rows = list(csv.DictReader(f))
+        numbers = ("id", "expected", "measured", "error", "verdict")
+        check([[r[k] for k in numbers] for r in mpi_rows] == [[r[k] for k in numbers] for r in rows],
+              "reproduce --mpi gives other numbers than --jobs 2")
 
 for study, message in (("chapter4", "not yet reproduced"), ("chapter9", "unknown study")):
     target = WORK / study
