@@ -59,13 +59,17 @@ for nu in args.area_fractions:
                         "--max-mode", str(args.max_mode), "--subtract-shear", "--exclude-ky-axis"], check=True)
         with h5py.File(spectra) as f:
             steady = f["collisions_per_particle"][:] >= args.steady_from
-            k = f["dominant/R/k"][:][steady]
-            angle = f["dominant/R/angle_deg"][:][steady]
-            length = 2 * math.pi / np.mean(k)  # reciprocal of the mean dominant |k| (thesis §3.2.1)
+            # Only frames whose dominant mode stands above the noise of uncorrelated positions
+            # (docs/spectra.md, significance) say anything about a cluster length.
+            significant = steady & (f["dominant/R/significant"][:] == 1)
+            k = f["dominant/R/k"][:][significant]
+            angle = f["dominant/R/angle_deg"][:][significant]
+            length = 2 * math.pi / np.mean(k) if len(k) else math.nan  # 1/mean dominant |k| (§3.2.1)
             L = f.attrs["box"][0]
             x = L * nu * math.sqrt(1 - e * e) / f.attrs["diameter"]
             rows.append({"area_fraction": nu, "restitution": e, "x": x, "dominant_length_over_L": length / L,
-                         "L0_over_L": f.attrs["L0"] / L, "mean_angle_deg": float(np.mean(angle)), "frames": int(steady.sum())})
+                         "L0_over_L": f.attrs["L0"] / L, "mean_angle_deg": float(np.mean(angle)) if len(angle) else math.nan,
+                         "frames": int(steady.sum()), "significant_frames": int(significant.sum())})
         print(rows[-1])
 
 with open(out / "fig328.csv", "w", newline="") as handle:

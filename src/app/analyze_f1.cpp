@@ -30,6 +30,7 @@ struct F1CommandOptions {
   std::string cells;
   std::int64_t from_frame = 0;
   bool subtract_shear_profile = false;
+  bool thesis_windows = false;
   std::optional<double> profile_speed;
   double profile_angle = M_PI;
   std::string out = "f1.h5";
@@ -95,6 +96,33 @@ int analyze_f1(const F1CommandOptions& o) {
     return bad_input(fmt::format("cannot read snapshots '{}': {}", o.snapshots, error.what()));
   }
   const SystemParams& system = first.metadata.system;
+  if (o.thesis_windows) {
+    // Appendix B's 4 ρ × 4 T windows of the run's ẽ, in the run's units (docs/f1.md, "Units").
+    const std::vector<AppendixBEntry> mapped = thesis_windows_in_run_units(system);
+    if (mapped.empty()) {
+      return bad_input(fmt::format("--thesis-windows needs a Lees–Edwards run with restitution 0.6, 0.7, 0.8 or 0.9 "
+                                   "(Appendix B's); this one has ẽ = {:g}, U = {:g}", system.restitution,
+                                   system.shear_velocity));
+    }
+    const auto add_unique = [](std::vector<ValueWindow>& list, ValueWindow w) {
+      for (const ValueWindow& known : list) {
+        if (known.center == w.center) return;
+      }
+      list.push_back(w);
+    };
+    for (const AppendixBEntry& e : mapped) {
+      add_unique(densities, {e.density, e.density_half_width});
+      add_unique(temperatures, {e.temperature, e.temperature_half_width});
+    }
+    const ThesisUnitMap map = appendix_b_unit_map(system);
+    fmt::print("Appendix B windows in this run's units: lengths × {:.4g}, velocities × {:.4g} of the thesis's "
+               "(N = 2e5, L = 1, U = 100, sigma = {:.4g}); this box is {:.4g} sigma wide, the thesis's {:.4g}\n",
+               map.length, map.velocity, AppendixBSystem::diameter(), system.length_x / system.diameter,
+               AppendixBSystem::box / AppendixBSystem::diameter());
+  }
+  if (densities.empty() || temperatures.empty()) {
+    return bad_input("give --density-window and --temperature-window (each at least once), or --thesis-windows");
+  }
   // Cumulative sampling of Chapter 5 is written for the velocity plane of disks.
   if (system.dimension != 2) {
     return bad_input(fmt::format("'{}' is a {}D run: the velocity distribution f1 is measured in 2D runs only", o.snapshots,
@@ -146,6 +174,7 @@ int analyze_f1(const F1CommandOptions& o) {
                  r.temperature, b.mean[0], b.mean[1], b.mean[2], r.estimate.direct.trace(),
                  r.estimate.once_integrals.moment.trace(), r.estimate.twice_integrals.moment.trace(),
                  fits_summary(r));
+      if (const auto match = nearest_thesis_window(system, r)) fmt::print("{}\n", describe_thesis_comparison(*match, r));
       results.push_back(std::move(r));
     }
     if (results.empty()) {
@@ -173,9 +202,10 @@ void add_analyze_f1(CLI::App& analyze) {
             "b^(i)(theta) in each density x temperature window. Docs: docs/f1.md");
   command->add_option("snapshots", o->snapshots, "snapshots.h5 of a (steady) run")->required();
   command->add_option("--density-window", o->density_windows,
-                      "rho window C±W in particles per unit area (repeatable; every rho x T pair is analysed)")
-      ->required();
-  command->add_option("--temperature-window", o->temperature_windows, "T window C±W, T = ½<v'²> (repeatable)")->required();
+                      "rho window C±W in particles per unit area (repeatable; every rho x T pair is analysed)");
+  command->add_option("--temperature-window", o->temperature_windows, "T window C±W, T = ½<v'²> (repeatable)");
+  command->add_flag("--thesis-windows", o->thesis_windows,
+                    "Add Appendix B's 4 x 4 windows of the run's restitution, mapped to the run's units (docs/f1.md)");
   command->add_option("--cells", o->cells, "Coarse-graining cells NX,NY (default: ~20 particles per cell)");
   command->add_option("--from-frame", o->from_frame, "First frame used (the steady state)")->default_val(0);
   command->add_flag("--subtract-shear-profile", o->subtract_shear_profile,

@@ -291,6 +291,11 @@ std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDes
     written.push_back(stem + suffix);
     write_file_atomically(written.back(), *content);
   }
+  const std::string thesis = thesis_comparison_csv(run.metadata.system, windows);
+  if (!thesis.empty()) {
+    written.push_back(stem + "_thesis.csv");
+    write_file_atomically(written.back(), thesis);
+  }
   write_hdf5(out, run, windows, curves);
   written.push_back(out);
   return written;

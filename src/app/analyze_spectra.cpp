@@ -1,8 +1,8 @@
 // `granule analyze spectra SNAPSHOTS.h5`: Fourier spectra of the mass and momentum densities of
 // each chosen frame (thesis §2.2, §3.2.1): the power maps R, P_x, P_y (, P_z), P, their annulus (2D) or
-// shell (3D) integrals against |k|, and the dominant wavevector against L0 = l/√(1−ẽ²) (1.1).  3D runs
-// also get the shell-averaged S(k) with its statistical band and the dominant mode's significance; their
-// maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
+// shell (3D) integrals against |k| and averages S(k) with the statistical band of an ideal gas, and the
+// dominant wavevector against L0 = l/√(1−ẽ²) (1.1) with its significance against uncorrelated positions
+// (spectra/mode_significance.hpp).  3D maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
 #include <fmt/format.h>
 #include <hdf5.h>
 
@@ -25,6 +25,7 @@
 #include "io/io_error.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/snapshot_file.hpp"
+#include "app/spectra_console.hpp"
 #include "spectra/dominant_mode.hpp"
 #include "spectra/power_spectra.hpp"
 #include "spectra/shell_structure_factor.hpp"
@@ -40,7 +41,7 @@ constexpr int kMaxModeLimit = 2048;
 constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
 constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
 constexpr const char* kFormat = "granule-spectra";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: every run has S(k), its band and the significance of dominant modes
 
 struct SpectraOptions {
   std::string snapshots;
@@ -52,6 +53,7 @@ struct SpectraOptions {
   bool exclude_ky_axis = false;
   std::string out = "spectra.h5";
   std::string csv;
+  double false_alarm = kDefaultFalseAlarm;
 };
 
 // "all", or comma-separated items: an index (negative counts from the end) or a Python-style slice
@@ -95,28 +97,35 @@ std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t tot
 }
 
 // The spectra, in output order: name in the file, the map of PowerMaps and the sum of AnnulusSpectrum
-// it comes from, and its mean power for uncorrelated positions.
+// it comes from, and its power for uncorrelated positions.
 struct FieldChoice {
   const char* name;
   const std::vector<double> PowerMaps::*map;
   const std::vector<double> AnnulusSpectrum::*annulus;
-  double (*ideal_level)(const PowerMaps&);
+  ModeNoise (*noise)(const PowerMaps&);
 };
 constexpr FieldChoice kFields[] = {
-    {"R", &PowerMaps::density, &AnnulusSpectrum::density, [](const PowerMaps& p) { return p.ideal_density; }},
-    {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x, [](const PowerMaps& p) { return p.ideal_momentum_axes[0]; }},
-    {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y, [](const PowerMaps& p) { return p.ideal_momentum_axes[1]; }},
-    {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum, [](const PowerMaps& p) { return p.ideal_momentum(); }}};
+    {"R", &PowerMaps::density, &AnnulusSpectrum::density, [](const PowerMaps& p) { return p.density_noise(); }},
+    {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x, [](const PowerMaps& p) { return p.momentum_component_noise(0); }},
+    {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y, [](const PowerMaps& p) { return p.momentum_component_noise(1); }},
+    {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum, [](const PowerMaps& p) { return p.momentum_noise(); }}};
 constexpr FieldChoice kFields3d[] = {
     kFields[0], kFields[1], kFields[2],
-    {"Pz", &PowerMaps::momentum_z, &AnnulusSpectrum::momentum_z, [](const PowerMaps& p) { return p.ideal_momentum_axes[2]; }},
+    {"Pz", &PowerMaps::momentum_z, &AnnulusSpectrum::momentum_z, [](const PowerMaps& p) { return p.momentum_component_noise(2); }},
     kFields[3]};
+
+// The columns of a dominant mode after its indices, in the file (dominant/<field>/<column>) and the CSV.
+constexpr std::pair<const char*, double DominantMode::*> kDominantColumns[] = {
+    {"kx", &DominantMode::kx}, {"ky", &DominantMode::ky}, {"kz", &DominantMode::kz}, {"k", &DominantMode::k},
+    {"angle_deg", &DominantMode::angle_deg}, {"length", &DominantMode::length}, {"power", &DominantMode::power},
+    {"power_over_ideal_gas", &DominantMode::power_over_ideal_gas}, {"independent_modes", &DominantMode::independent_modes},
+    {"noise_p_value", &DominantMode::noise_p_value}, {"noise_threshold", &DominantMode::noise_threshold}};
 
 std::span<const FieldChoice> fields_of(int dimension) {
   return dimension == 3 ? std::span<const FieldChoice>(kFields3d) : std::span<const FieldChoice>(kFields);
 }
 
-// The shell-averaged spectra of 3D files: name, and the member of ShellStructureFactor.
+// The shell-averaged spectra: name, and the member of ShellStructureFactor.
 constexpr std::pair<const char*, const std::vector<double> ShellStructureFactor::*> kShellAverages[] = {
     {"S_R", &ShellStructureFactor::density}, {"S_R_sd", &ShellStructureFactor::density_sd},
     {"S_P", &ShellStructureFactor::momentum}, {"S_P_sd", &ShellStructureFactor::momentum_sd}};
@@ -164,6 +173,13 @@ class SpectraFile {
     const double l = mean_free_path(s), l0 = cluster_length(s);
     write_attribute(file_, "mean_free_path", H5T_NATIVE_DOUBLE, &l);
     write_attribute(file_, "L0", H5T_NATIVE_DOUBLE, &l0);
+    write_string_attribute(file_, "length_over_L0_compares",
+                           depth_ ? "2pi/|k| of the dominant mode over L0 = l/sqrt(1-e^2) (1.1), l = 1/(sqrt2 pi n sigma^2)"
+                                  : "2pi/|k| of the dominant mode over L0 = l/sqrt(1-e^2) (1.1), l = LxLy/(2 N sigma) (3.1.2)");
+    write_attribute(file_, "false_alarm", H5T_NATIVE_DOUBLE, &options.false_alarm);
+    write_string_attribute(file_, "null_hypothesis",
+                           "uncorrelated positions: power/level of one mode ~ sum_i share_i Exp(1); "
+                           "noise_p_value = 1 - (1 - Q(s))^K over K independent modes (+-k once)");
 
     const auto side = static_cast<hsize_t>(2 * transform.max_mode + 1);
     const auto rings = static_cast<hsize_t>(bins.k.size());
@@ -174,28 +190,22 @@ class SpectraFile {
     add_frames(file_, "kx", H5T_IEEE_F64LE, {side, side});
     add_frames(file_, "ky", H5T_IEEE_F64LE, {side, side});
     add_frames(file_, (rings_ + "modes").c_str(), H5T_STD_I64LE, {rings});
-    if (depth_) {
-      add_frames(file_, "shell_P_modes", H5T_STD_I64LE, {rings});
-      for (const auto& [name, member] : kShellAverages) add_frames(file_, name, H5T_IEEE_F64LE, {rings});
-      for (const char* name : {"ideal_R", "ideal_P"}) add_frames(file_, name, H5T_IEEE_F64LE, {});
-    }
+    add_frames(file_, (rings_ + "P_modes").c_str(), H5T_STD_I64LE, {rings});
+    for (const auto& [name, member] : kShellAverages) add_frames(file_, name, H5T_IEEE_F64LE, {rings});
+    for (const char* name : {"ideal_R", "ideal_P"}) add_frames(file_, name, H5T_IEEE_F64LE, {});
     Handle(create_group(file_, "dominant"), H5Gclose).close();
     for (const FieldChoice& field : fields_of(s.dimension)) {
       add_frames(file_, field.name, H5T_IEEE_F64LE, {side, side});
       add_frames(file_, (rings_ + field.name).c_str(), H5T_IEEE_F64LE, {rings});
       const std::string group = std::string("dominant/") + field.name;
       Handle(create_group(file_, group.c_str()), H5Gclose).close();
-      for (const char* column : {"l", "m", "n"}) {
+      for (const char* column : {"l", "m", "n", "significant"}) {
         if (depth_ || column[0] != 'n') add_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {});
       }
-      for (const char* column : {"kx", "ky", "k", "angle_deg", "length", "power", "length_over_L0"}) {
-        add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
+      for (const auto& [column, member] : kDominantColumns) {
+        if (depth_ || std::string(column) != "kz") add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
       }
-      if (depth_) {
-        for (const char* column : {"kz", "power_over_ideal_gas", "noise_p_value"}) {
-          add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
-        }
-      }
+      add_frames(file_, (group + "/length_over_L0").c_str(), H5T_IEEE_F64LE, {});
     }
   }
 
@@ -213,14 +223,12 @@ class SpectraFile {
     append_frame(file_, "kx", H5T_NATIVE_DOUBLE, maps.kx.data() + plane, k);
     append_frame(file_, "ky", H5T_NATIVE_DOUBLE, maps.ky.data() + plane, k);
     append_frame(file_, (rings_ + "modes").c_str(), H5T_NATIVE_INT64, annulus.modes.data(), k);
-    if (depth_) {
-      append_frame(file_, "shell_P_modes", H5T_NATIVE_INT64, annulus.momentum_modes.data(), k);
-      const ShellStructureFactor averages = shell_structure_factor(annulus, maps);
-      for (const auto& [name, member] : kShellAverages) append_frame(file_, name, H5T_NATIVE_DOUBLE, (averages.*member).data(), k);
-      const double ideal_momentum = maps.ideal_momentum();
-      append_frame(file_, "ideal_R", H5T_NATIVE_DOUBLE, &maps.ideal_density, k);
-      append_frame(file_, "ideal_P", H5T_NATIVE_DOUBLE, &ideal_momentum, k);
-    }
+    append_frame(file_, (rings_ + "P_modes").c_str(), H5T_NATIVE_INT64, annulus.momentum_modes.data(), k);
+    const ShellStructureFactor averages = shell_structure_factor(annulus, maps);
+    for (const auto& [name, member] : kShellAverages) append_frame(file_, name, H5T_NATIVE_DOUBLE, (averages.*member).data(), k);
+    const double ideal_momentum = maps.ideal_momentum();
+    append_frame(file_, "ideal_R", H5T_NATIVE_DOUBLE, &maps.ideal_density, k);
+    append_frame(file_, "ideal_P", H5T_NATIVE_DOUBLE, &ideal_momentum, k);
     const std::span<const FieldChoice> fields = fields_of(maps.lattice.dimension);
     for (std::size_t f = 0; f < fields.size(); ++f) {
       const FieldChoice& field = fields[f];
@@ -229,19 +237,15 @@ class SpectraFile {
       const std::string group = std::string("dominant/") + field.name + "/";
       const DominantMode& d = dominant[f];
       const double ratio = d.length / l0;
+      const int significant = d.significant ? 1 : 0;
       append_frame(file_, (group + "l").c_str(), H5T_NATIVE_INT, &d.l, k);
       append_frame(file_, (group + "m").c_str(), H5T_NATIVE_INT, &d.m, k);
       if (depth_) append_frame(file_, (group + "n").c_str(), H5T_NATIVE_INT, &d.n, k);
-      for (const auto& [column, value] : {std::pair{"kx", &d.kx}, {"ky", &d.ky}, {"k", &d.k}, {"angle_deg", &d.angle_deg},
-                                          {"length", &d.length}, {"power", &d.power}, {"length_over_L0", &ratio}}) {
-        append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
+      append_frame(file_, (group + "significant").c_str(), H5T_NATIVE_INT, &significant, k);
+      for (const auto& [column, member] : kDominantColumns) {
+        if (depth_ || std::string(column) != "kz") append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, &(d.*member), k);
       }
-      if (depth_) {
-        for (const auto& [column, value] : {std::pair{"kz", &d.kz}, {"power_over_ideal_gas", &d.power_over_ideal_gas},
-                                            {"noise_p_value", &d.noise_p_value}}) {
-          append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, value, k);
-        }
-      }
+      append_frame(file_, (group + "length_over_L0").c_str(), H5T_NATIVE_DOUBLE, &ratio, k);
     }
     partial_.end_frame();
   }
@@ -263,6 +267,9 @@ int analyze_spectra(const SpectraOptions& options) {
   // 1. Everything that can be wrong with the input is found before anything is written.
   if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
     return bad_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
+  }
+  if (!(options.false_alarm > 0.0 && options.false_alarm < 1.0)) {
+    return bad_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", options.false_alarm));
   }
   if (options.method != "fast" && options.method != "exact") {
     return bad_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
@@ -301,10 +308,11 @@ int analyze_spectra(const SpectraOptions& options) {
   // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
   try {
     std::unique_ptr<SpectraFile> file;
-    const bool depth = dimension == 3;
-    std::string csv = depth ? "frame,t,c,shear_offset,field,l,m,n,kx,ky,kz,k,angle_deg,length,power,length_over_L0,"
-                              "power_over_ideal_gas,noise_p_value\n"
-                            : "frame,t,c,shear_offset,field,l,m,kx,ky,k,angle_deg,length,power,length_over_L0\n";
+    std::string csv = "frame,t,c,shear_offset,field,l,m,n";
+    for (const auto& [column, member] : kDominantColumns) csv += fmt::format(",{}", column);
+    csv += ",length_over_L0,significant\n";
+    std::vector<SignificanceTally> tallies(fields_of(dimension).size());
+    fmt::print("{}\n", describe_comparison(metadata.system, l0, options.false_alarm));
     for (const std::int64_t index : frames) {
       const SnapshotRead snapshot = index == 0 ? first : read_snapshot(options.snapshots, index);
       const SnapshotFrame& frame = snapshot.frame;
@@ -314,25 +322,25 @@ int analyze_spectra(const SpectraOptions& options) {
       if (!file) file = std::make_unique<SpectraFile>(options.out, options, metadata, transform, dk, annulus);
       std::vector<DominantMode> dominant;
       for (const FieldChoice& field : fields_of(dimension)) {
-        const DominantMode& d = dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.ideal_level(maps)));
-        csv += depth ? fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                                   "{:.17g},{:.17g},{:.17g},{:.17g}\n",
-                                   index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name,
-                                   d.l, d.m, d.n, d.kx, d.ky, d.kz, d.k, d.angle_deg, d.length, d.power, d.length / l0,
-                                   d.power_over_ideal_gas, d.noise_p_value)
-                     : fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
-                                   index, frame.clock.time, frame.collisions_per_particle, frame.shear_offset, field.name,
-                                   d.l, d.m, d.kx, d.ky, d.k, d.angle_deg, d.length, d.power, d.length / l0);
+        const DominantMode& d =
+            dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.noise(maps), options.false_alarm));
+        csv += fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{}", index, frame.clock.time, frame.collisions_per_particle,
+                           frame.shear_offset, field.name, d.l, d.m, d.n);
+        for (const auto& [column, member] : kDominantColumns) csv += fmt::format(",{:.17g}", d.*member);
+        csv += fmt::format(",{:.17g},{}\n", d.length / l0, d.significant ? 1 : 0);
       }
       file->append(index, frame, maps, annulus, dominant, l0);
-      fmt::print("frame {} (t = {:.6g}, c = {:.6g}): dominant R mode 2π/|k| = {:.4g} at {:.1f}°, {:.3g} L0", index,
-                 frame.clock.time, frame.collisions_per_particle, dominant[0].length, dominant[0].angle_deg,
-                 dominant[0].length / l0);
-      if (depth) {
-        fmt::print(" (k_z = {:.4g}; {:.3g} × the uncorrelated level, noise p = {:.2g})", dominant[0].kz,
-                   dominant[0].power_over_ideal_gas, dominant[0].noise_p_value);
+      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.clock.time, frame.collisions_per_particle);
+      for (std::size_t f = 0; f < dominant.size(); ++f) {
+        const char* name = fields_of(dimension)[f].name;
+        if (name == std::string("R") || name == std::string("P")) {
+          fmt::print("  {}\n", describe_dominant(name, dominant[f], l0, options.false_alarm));
+        }
+        tallies[f].add(dominant[f], l0);
       }
-      fmt::print("\n");
+    }
+    for (std::size_t f = 0; f < tallies.size(); ++f) {
+      fmt::print("{}\n", tallies[f].summary(fields_of(dimension)[f].name, options.false_alarm));
     }
     write_file_atomically(csv_path, csv);
     file->publish();
@@ -372,6 +380,10 @@ void add_analyze_spectra(CLI::App& analyze) {
                     "Leave the k_y axis (l = 0, and n = 0 in 3D) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
   command->add_option("--out", options->out, "Output HDF5 file")->default_val("spectra.h5");
   command->add_option("--csv", options->csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
+  command->add_option("--false-alarm", options->false_alarm,
+                      "False-alarm probability below which a dominant mode is significant against uncorrelated "
+                      "positions, over all modes compared (0 < level < 1)")
+      ->default_val(kDefaultFalseAlarm);
   command->callback([options] { throw CLI::RuntimeError(analyze_spectra(*options)); });
 }
 

@@ -80,7 +80,10 @@ py::dict dominant(const spectra::DominantMode& mode) {
   out["length"] = mode.length;
   out["power"] = mode.power;
   out["power_over_ideal_gas"] = mode.power_over_ideal_gas;
+  out["independent_modes"] = mode.independent_modes;
   out["noise_p_value"] = mode.noise_p_value;
+  out["noise_threshold"] = mode.noise_threshold;
+  out["significant"] = mode.significant;
   return out;
 }
 

@@ -8,7 +8,8 @@
 
 namespace granule::spectra {
 
-DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, double ideal_level) {
+DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, const ModeNoise& noise,
+                           double false_alarm) {
   const std::size_t origin = maps.modes.index(0, 0);
   std::size_t best = origin, included = 0;
   for (std::size_t i = 0; i < power.size(); ++i) {
@@ -37,10 +38,13 @@ DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& pow
   mode.angle_deg = std::atan2(mode.ky, mode.kx) * 180.0 / std::numbers::pi + 0.0;  // + 0.0 turns −0° into 0°
   mode.length = 2.0 * std::numbers::pi / mode.k;
   mode.power = power[best];
-  if (ideal_level > 0.0) {
-    mode.power_over_ideal_gas = mode.power / ideal_level;
-    const double independent = 0.5 * static_cast<double>(included);  // S(−k) = S(k)*: pairs
-    mode.noise_p_value = -std::expm1(independent * std::log1p(-std::exp(-mode.power_over_ideal_gas)));
+  if (noise.level > 0.0) {
+    mode.power_over_ideal_gas = mode.power / noise.level;
+    mode.independent_modes = 0.5 * static_cast<double>(included);  // S(−k) = S(k)*: pairs
+    mode.noise_p_value = false_alarm_probability(single_mode_survival(mode.power_over_ideal_gas, noise.shares),
+                                                 mode.independent_modes);
+    mode.noise_threshold = noise_threshold(false_alarm, mode.independent_modes, noise.shares);
+    mode.significant = mode.noise_p_value < false_alarm;
   }
   return mode;
 }

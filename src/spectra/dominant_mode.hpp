@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/system_params.hpp"
+#include "spectra/mode_significance.hpp"
 #include "spectra/power_spectra.hpp"
 
 namespace granule::spectra {
@@ -18,19 +19,23 @@ struct DominantMode {
   double angle_deg = 0.0;   // of (k_x, k_y) from the +k_x axis, in [0°, 180°): 135° ⇔ structures along 45°
   double length = 0.0;      // 2π/|k|: the dominant length scale
   double power = 0.0;
-  // power / ⟨power⟩ of uncorrelated positions, and the chance that uncorrelated positions put at least
-  // this much into some mode: each of the K independent modes (pairs ±k) of such a gas carries an
-  // exponentially distributed power of that mean, so p = 1 − (1 − e^{−s})^K for s = power_over_ideal_gas.
-  // Exact (for large N) for R and for one momentum component; for P, a sum of d components whose tail
-  // beyond s ≳ 2 is thinner than e^{−s}, it overstates p (a conservative significance).
+  // Its significance against uncorrelated positions (spectra/mode_significance.hpp): s = power / ⟨power⟩
+  // of such a gas (the noise level), the K independent modes (pairs ±k) compared, the false-alarm
+  // probability p = 1 − (1 − Q(s))^K that noise puts at least s into one of them, the s at which p
+  // equals the chosen false-alarm level, and whether this mode lies above it (p < level).
   double power_over_ideal_gas = 0.0;
+  double independent_modes = 0.0;
   double noise_p_value = 1.0;
+  double noise_threshold = 0.0;
+  bool significant = false;
 };
 
-// The mode of largest power among all computed modes except k = 0 and excluded (NaN) ones; `ideal_level`
-// is the field's mean power for uncorrelated positions.  Power is even in k, so of the pair ±k the one
-// with k_y > 0 (or k_y = 0 and k_x > 0, or k ∥ +ẑ) is returned.
-DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, double ideal_level = 0.0);
+// The mode of largest power among all computed modes except k = 0 and excluded (NaN) ones; `noise` is
+// the field's power for uncorrelated positions (no significance when its level is 0), `false_alarm`
+// the level in (0, 1) below which p makes the mode significant.  Power is even in k, so of the pair ±k
+// the one with k_y > 0 (or k_y = 0 and k_x > 0, or k ∥ +ẑ) is returned.
+DominantMode dominant_mode(const PowerMaps& maps, const std::vector<double>& power, const ModeNoise& noise = {},
+                           double false_alarm = kDefaultFalseAlarm);
 
 double mean_free_path(const SystemParams& system);   // l: 2D (§3.1.2) or 3D (Boltzmann), above
 double cluster_length(const SystemParams& system);   // L0 = l/√(1 − ẽ²) (1.1); +∞ when ẽ = 1

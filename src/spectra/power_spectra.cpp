@@ -19,6 +19,7 @@ PowerMaps power_maps(const DensityMomentumTransforms& t, bool exclude_ky_axis_fr
   maps.ideal_density = t.ideal_density;
   maps.ideal_momentum_axes = t.ideal_momentum_axes;
   maps.ideal_momentum_spread = t.ideal_momentum_spread;
+  maps.ideal_momentum_shares = t.ideal_momentum_shares;
   if (depth) {
     maps.kz.resize(count);
     maps.momentum_z.resize(count);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "spectra/mode_significance.hpp"
 #include "spectra/spectral_transforms.hpp"
 
 namespace granule::spectra {
@@ -25,8 +26,15 @@ struct PowerMaps {
   double ideal_density = 0.0;                        // ⟨R⟩ of uncorrelated positions
   std::array<double, 3> ideal_momentum_axes = {};     // ⟨P_x⟩, ⟨P_y⟩, ⟨P_z⟩ likewise
   double ideal_momentum_spread = 1.0;                 // sd of P over its mean, likewise
+  std::array<double, 3> ideal_momentum_shares = {1.0, 0.0, 0.0};  // P's components' shares, likewise
 
   double ideal_momentum() const { return ideal_momentum_axes[0] + ideal_momentum_axes[1] + ideal_momentum_axes[2]; }
+  // The power of one mode of uncorrelated positions (mode_significance.hpp): R, one component a of p̃, P.
+  ModeNoise density_noise() const { return ModeNoise(ideal_density); }
+  ModeNoise momentum_component_noise(int axis) const { return ModeNoise(ideal_momentum_axes[static_cast<std::size_t>(axis)]); }
+  ModeNoise momentum_noise() const {
+    return {ideal_momentum(), {ideal_momentum_shares.begin(), ideal_momentum_shares.end()}};
+  }
   double k(std::size_t i) const;  // |k| of mode i
 };
 

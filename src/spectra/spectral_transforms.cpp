@@ -1,6 +1,8 @@
 #include "spectra/spectral_transforms.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -57,7 +59,17 @@ DensityMomentumTransforms transform_fields(const ParticleState& state, const She
     trace += covariance[a][a];
     for (std::size_t b = 0; b < 3; ++b) squares += covariance[a][b] * covariance[a][b];
   }
-  if (trace > 0.0) out.ideal_momentum_spread = std::sqrt(squares) / trace;
+  if (trace > 0.0) {
+    out.ideal_momentum_spread = std::sqrt(squares) / trace;
+    Eigen::Matrix3d normalized;
+    for (std::size_t a = 0; a < 3; ++a) {
+      for (std::size_t b = 0; b < 3; ++b) {
+        normalized(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = covariance[a][b] / trace;
+      }
+    }
+    const Eigen::Vector3d shares = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normalized, Eigen::EigenvaluesOnly).eigenvalues();
+    for (std::size_t a = 0; a < 3; ++a) out.ideal_momentum_shares[a] = std::max(0.0, shares(static_cast<Eigen::Index>(a)));
+  }
   out.density = std::move(sums[0]);
   out.momentum_x = std::move(sums[1]);
   out.momentum_y = std::move(sums[2]);

@@ -41,6 +41,9 @@ struct DensityMomentumTransforms {
   // covariance C_ab = Σ_j m_j² v_{j,a} v_{j,b}/4π², so Var |p̃|² = Σ_ab C_ab² and the ratio is
   // √(Σ_ab C_ab²)/tr C — 1 for a single component, ≈ 1/√d for d equal uncorrelated ones.
   double ideal_momentum_spread = 1.0;
+  // The eigenvalues of C over tr C: |p̃|²/tr C of uncorrelated positions is Σ_i λ_i E_i with E_i
+  // independent Exp(1) (spectra/mode_significance.hpp); {1, 0, 0} when every velocity is zero.
+  std::array<double, 3> ideal_momentum_shares = {1.0, 0.0, 0.0};
 };
 
 // `state` holds lab-frame positions inside the box, of the lattice's dimension (std::invalid_argument

@@ -107,8 +107,31 @@ check(result.stderr.count("warning: window") == 2 and "skipped" in result.stderr
       f"the two empty windows are skipped with a warning: {result.stderr!r}")
 stem = out.with_suffix("")
 written = {out.name, *(f"{stem.name}_{s}.csv" for s in ("table", "windows", "speed", "cumulative", "angular",
-                                                          "profiles"))}
+                                                          "profiles", "thesis"))}
 check(set(outputs_in(out.parent)) == written, f"outputs written: {outputs_in(out.parent)}")
+
+# The comparison with Appendix B (ẽ = 0.8 has a table) in this run's units, recomputed here: the
+# thesis's system is N = 2e5 in a unit box at ν = 0.05, U = 100 (docs/f1.md, "Units"); lengths map by
+# σ/σ_t, velocities by (σ γ)/(σ_t γ_t); T by the velocity factor squared, b₀⁽¹⁾ by its inverse.
+with h5py.File(snapshots) as f:
+    sigma, ly = f.attrs["diameter"], f.attrs["box"][1]
+sigma_t = math.sqrt(4 * 0.05 / (math.pi * 2e5))
+u = sigma * (20 / ly) / (sigma_t * 100)
+rows = list(csv.DictReader(open(f"{stem}_thesis.csv")))
+check(len(rows) == 2, f"one comparison per analysed window: {len(rows)}")
+thesis_08 = {(1.6e5, 0.18): 0.5204, (2.0e5, 0.18): 0.3993, (2.4e5, 0.18): 0.3162, (2.8e5, 0.18): 0.2647,
+             (1.6e5, 0.24): 0.3627, (2.0e5, 0.24): 0.3428, (2.4e5, 0.24): 0.3145, (2.8e5, 0.24): 0.2543,
+             (1.6e5, 0.30): 0.3663, (2.0e5, 0.30): 0.2534, (2.4e5, 0.30): 0.1660, (2.8e5, 0.30): 0.1556,
+             (1.6e5, 0.36): 0.3124, (2.0e5, 0.36): 0.2750, (2.4e5, 0.36): 0.2693, (2.8e5, 0.36): 0.1735}
+for row in rows:
+    rho_t = float(row["thesis_rho_center"]) * (sigma / sigma_t) ** 2
+    t_t = float(row["thesis_T_center"]) / u ** 2
+    key = min(thesis_08, key=lambda k: abs(k[0] - rho_t) / 2e4 + abs(k[1] - t_t) / 0.03)
+    check(abs(rho_t - key[0]) < 1e-6 * key[0] and abs(t_t - key[1]) < 1e-6 * key[1],
+          f"thesis window mapped back: {rho_t}, {t_t}")
+    check(abs(float(row["thesis_b1_0"]) * u - thesis_08[key]) < 1e-5, f"b0(1) mapped by 1/u: {row['thesis_b1_0']}")
+    check(abs(float(row["thesis_sqrt2T_b1_0"]) - math.sqrt(2 * key[1]) * thesis_08[key]) < 1e-5,
+          "the dimensionless sqrt(2T) b0(1) is the thesis's")
 
 with h5py.File(out) as f:
     fmt_attr = f.attrs["format"]

@@ -82,8 +82,33 @@ with h5py.File(snapshots) as snap, h5py.File(out) as f:
     annulus_k = f["annulus_k"][:]
     check(np.allclose(np.diff(annulus_k), f.attrs["dk"]), "annulus bins spaced by dk")
 
+# The significance of the dominant R mode, recomputed from the stored maps: s = power/(N/4π²), and the
+# false-alarm probability of the largest of K = ((2M+1)² − 1)/2 exponentials (docs/spectra.md).
+with h5py.File(out) as f:
+    d = f["dominant/R"]
+    level = f.attrs["particles"] / (4 * math.pi ** 2)
+    independent = ((2 * M + 1) ** 2 - 1) / 2
+    for row in range(len(frames)):
+        s = d["power"][row] / level
+        check(abs(d["power_over_ideal_gas"][row] - s) < 1e-9 * s, "power over the ideal-gas level")
+        check(d["independent_modes"][row] == independent, f"K = {independent}, got {d['independent_modes'][row]}")
+        p = -math.expm1(independent * math.log1p(-math.exp(-s)))
+        check(abs(d["noise_p_value"][row] - p) < 1e-9 + 1e-9 * p, f"p = 1 - (1 - e^-s)^K: {d['noise_p_value'][row]} vs {p}")
+        check(d["significant"][row] == (p < 0.05), "significant = p < 0.05")
+        threshold = -math.log(-math.expm1(math.log1p(-0.05) / independent))
+        check(abs(d["noise_threshold"][row] - threshold) < 1e-6 * threshold, "threshold where p = 0.05")
+    check("P" in f["dominant"] and "noise_p_value" in f["dominant/P"], "P has its significance too")
+    check(f["S_R"].shape == f["annulus_R"].shape, "2D files carry the annulus-averaged S_R")
+    check(f.attrs["false_alarm"] == 0.05 and f.attrs["format_version"] == 2, "false-alarm level and version 2")
+lines = [line for line in result.stdout.splitlines() if line.startswith("  R:")]
+check(len(lines) == len(frames) and all("significant" in line for line in lines),
+      f"console says per frame whether R's mode is significant: {result.stdout}")
+check("compared with L0 = l/√(1−ẽ²)" in result.stdout, "console says what the length is compared with")
+check("frames (false-alarm level 0.05)" in result.stdout, "closing count of significant frames")
+
 rows = list(csv.DictReader(open(WORK / "le_spectra_dominant.csv")))
 check(len(rows) == 4 * len(frames), f"CSV has 4 fields per frame, got {len(rows)} rows")
+check({"noise_p_value", "significant", "noise_threshold"} <= set(rows[0]), "CSV has the significance columns")
 check({r["field"] for r in rows} == {"R", "Px", "Py", "P"}, "CSV fields")
 
 # 2. Periodic box, exact method: the same numbers as the fast method to 1e-4 of the ideal-gas level.
@@ -102,7 +127,8 @@ with h5py.File(fast) as a, h5py.File(exact) as b:
 
 # 3. Bad input: exit code 2, no output.
 for args, what in ((["--max-mode", "0"], "--max-mode"), (["--dk", "-1"], "--dk"), (["--method", "slow"], "--method"),
-                   (["--frames", "99"], "--frames"), (["--subtract-shear"], "--subtract-shear")):
+                   (["--frames", "99"], "--frames"), (["--subtract-shear"], "--subtract-shear"),
+                   (["--false-alarm", "1.5"], "--false-alarm")):
     bad = WORK / "bad.h5"
     result = granule("analyze", "spectra", str(snapshots), "--out", str(bad), *args)
     check(result.returncode == 2, f"{args}: exit code {result.returncode}, expected 2")
