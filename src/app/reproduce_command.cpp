@@ -122,6 +122,7 @@ GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& comple
   for (const sweep::SweepPoint& point : g.spec.points) {
     PointOutputs p;
     p.name = point.name;
+    p.directory = g.dir.run(point).string();
     const sweep::PointRecord record = sweep::current_record(g.dir, point);
     p.status = record.status;
     run_seconds += record.seconds;
@@ -134,6 +135,28 @@ GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& comple
     outputs.push_back(std::move(p));
   }
   return outputs;
+}
+
+// The study's analyses of every usable point of the group, each once (its output tells).  A failed
+// analysis is reported; the claims that need it then find no number.
+void run_point_analyses(const Study& study, const GroupRun& g, const GroupOutputs& outputs) {
+  for (const PointAnalysis& analysis : study.analyses) {
+    if (analysis.group != g.group) continue;
+    for (const PointOutputs& p : outputs) {
+      if (!p.usable() || fs::exists(fs::path(p.directory) / analysis.output)) continue;
+      const std::string log = (fs::path(p.directory) / (analysis.output + ".log")).string();
+      // The analysis's output goes to its log; the shell only redirects, with every word passed as an argument.
+      std::vector<std::string> argv{"/bin/sh", "-c", "log=$1; shift; exec \"$@\" > \"$log\" 2>&1", "sh", log, own_executable()};
+      for (std::string a : analysis.arguments) {
+        if (const std::size_t at = a.find("{run}"); at != std::string::npos) a.replace(at, 5, p.directory);
+        argv.push_back(a);
+      }
+      fmt::print("reproduce: {}/{}/{}: granule {}\n", study.name, g.group, p.name, fmt::join(analysis.arguments, " "));
+      std::fflush(stdout);
+      if (run_program(argv) != 0)
+        fmt::print(stderr, "granule reproduce: warning: the analysis of {} failed (see {})\n", p.name, log);
+    }
+  }
 }
 
 nlohmann::json figure_json(const Figure& f) {
@@ -180,6 +203,7 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
         if (g.study != study) continue;
         std::string line;
         outputs[g.group] = read_group(g, line, complete, r.run_seconds);
+        run_point_analyses(*study, g, outputs[g.group]);
         section.run_lines.push_back(line);
       }
       fmt::print("reproduce: analysing {}\n", study->name);

@@ -61,7 +61,7 @@ Claim estimate_claim(std::string id, std::string statement, std::string location
 namespace {
 
 Study not_yet(const char* name, const char* title, const char* part, const char* meanwhile) {
-  return {name, title, part, {}, {}, meanwhile};
+  return {name, title, part, {}, {}, meanwhile, {}};
 }
 
 }  // namespace

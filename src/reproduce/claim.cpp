@@ -45,8 +45,9 @@ Verdict judge(const Claim& c) {
   if (!c.unresolvable.empty() || !std::isfinite(c.measured) || !std::isfinite(c.expected)) return Verdict::not_resolvable;
   const double two_sigma = std::isfinite(c.error) ? 2.0 * std::abs(c.error) : 0.0;
   const Band band = tolerance_band(c);
-  if (two_sigma > band.high - band.low) return Verdict::not_resolvable;
-  return c.measured >= band.low - two_sigma && c.measured <= band.high + two_sigma ? Verdict::agrees : Verdict::disagrees;
+  const bool overlaps = c.measured >= band.low - two_sigma && c.measured <= band.high + two_sigma;
+  if (!overlaps) return Verdict::disagrees;  // even the nearest end of ±2σ lies outside the band
+  return two_sigma > band.high - band.low ? Verdict::not_resolvable : Verdict::agrees;
 }
 
 std::string tolerance_text(const Claim& c) {

@@ -32,11 +32,12 @@ struct Claim {
 };
 
 // The verdict of a claim, from its numbers alone:
-// - not resolvable when `unresolvable` says so, when the measurement is missing (not finite), or
-//   when the statistical band ±2σ alone is wider than the tolerance band, so that neither answer
-//   would mean anything;
-// - agrees when the measured number lies within the tolerance band widened by 2σ;
-// - disagrees otherwise.
+// - not resolvable when `unresolvable` says so or the measurement is missing (not finite);
+// - disagrees when the measured number lies outside the tolerance band widened by 2σ (the whole
+//   interval ±2σ misses the band);
+// - not resolvable when it lies inside but ±2σ alone is wider than the band, so that an agreement
+//   would mean nothing;
+// - agrees otherwise.
 Verdict judge(const Claim& claim);
 
 // The tolerance as a reader reads it: "±5 %", "±0.2", "within a factor 2".

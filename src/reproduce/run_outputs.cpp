@@ -1,7 +1,9 @@
 #include "reproduce/run_outputs.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace granule::reproduce {
 
@@ -45,6 +47,24 @@ Estimate mean_over(const std::vector<double>& values) {
   }
   e.error = std::sqrt(squares / (e.count - 1) / e.count);
   return e;
+}
+
+std::vector<std::map<std::string, std::string>> read_csv_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::map<std::string, std::string>> rows;
+  std::string line;
+  if (!std::getline(in, line)) return rows;
+  std::vector<std::string> header;
+  std::istringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::map<std::string, std::string> row;
+    std::size_t k = 0;
+    for (std::string cell; std::getline(cells, cell, ',') && k < header.size(); ++k) row[header[k]] = cell;
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,8 +14,9 @@
 namespace granule::reproduce {
 
 struct PointOutputs {
-  std::string name;    // the sweep point's name
-  std::string status;  // finished, collapsed, failed, interrupted, pending (sweep/point_record.hpp)
+  std::string name;       // the sweep point's name
+  std::string directory;  // its run directory (the outputs of PointAnalysis too)
+  std::string status;     // finished, collapsed, failed, interrupted, pending (sweep/point_record.hpp)
   std::vector<DiagnosticsSample> samples;
   nlohmann::json summary;  // null when the run wrote none
   // The value of a swept key at this point as its readable text ("0.8"), "" when not swept.
@@ -52,6 +54,10 @@ double window_mean(const std::vector<DiagnosticsSample>& samples, double c_from,
   }
   return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
 }
+
+// The rows of a plain CSV file (no quoted commas: the analyses' own tables) as column → text;
+// empty when the file is missing.
+std::vector<std::map<std::string, std::string>> read_csv_rows(const std::string& path);
 
 // Ordinary least-squares line y = a + b x; NaN with fewer than three points.
 struct LineFit {

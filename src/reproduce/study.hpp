@@ -58,6 +58,15 @@ struct Figure {
   std::vector<FigureSeries> series;
 };
 
+// A `granule` analysis run on every usable point of a group once its runs ended, e.g. `analyze
+// spectra`: "{run}" in the arguments stands for the point's run directory; skipped when `output`
+// (relative to it) exists, so a second call does not repeat it.
+struct PointAnalysis {
+  std::string group;
+  std::vector<std::string> arguments;
+  std::string output;
+};
+
 struct StudyOutcome {
   std::vector<Claim> claims;
   std::vector<Figure> figures;
@@ -75,6 +84,7 @@ struct Study {
   std::function<std::vector<RunGroup>(Scale)> runs;
   std::function<StudyOutcome(Scale, const StudyOutputs&)> evaluate;
   std::string not_yet_reproduced;
+  std::vector<PointAnalysis> analyses;
   bool built() const { return static_cast<bool>(runs); }
 };
 

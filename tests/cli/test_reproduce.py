@@ -28,9 +28,9 @@ def verdict(claim):
     else:
         low, high = sorted((e / t, e * t))
     two_sigma = 2 * abs(s) if s is not None else 0.0
-    if two_sigma > high - low:
-        return "not resolvable at this scale"
-    return "agrees" if low - two_sigma <= m <= high + two_sigma else "disagrees"
+    if not low - two_sigma <= m <= high + two_sigma:
+        return "disagrees"
+    return "not resolvable at this scale" if two_sigma > high - low else "agrees"
 
 
 out = WORK / "report"

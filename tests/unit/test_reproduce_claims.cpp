@@ -39,6 +39,8 @@ TEST(ReproduceVerdict, TheStatisticalErrorWidensTheBand) {
 
 TEST(ReproduceVerdict, TooNoisyOrMissingIsNotResolvable) {
   EXPECT_EQ(judge(relative_claim(1.0, 0.06)), Verdict::not_resolvable);  // 2σ = 0.12 > band width 0.10
+  // ... yet a number whose whole ±2σ misses the band disagrees however noisy it is.
+  EXPECT_EQ(judge(relative_claim(10.0, 0.5)), Verdict::disagrees);
   EXPECT_EQ(judge(relative_claim(std::numeric_limits<double>::quiet_NaN(), 0.0)), Verdict::not_resolvable);
   Claim said = relative_claim(1.0, 0.001);
   said.unresolvable = "no significance available";
