@@ -218,6 +218,10 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
           "in {} of {} run(s)",
           lengths.size(), compared),
       ToleranceKind::factor);
+  if (!lengths.empty() && mode.measured > 0.5 * summary_number(first, "box.0")) {
+    // Coarsening has reached the box: the comparison with L0 then says how far, not what L0 is.
+    mode.checked += "; the dominant length is of the box's size (its lowest modes): the structure has coarsened to the box";
+  }
   if (compared == 0)
     mode.unresolvable = "no spectra were computed (granule analyze spectra failed or did not run)";
   else if (lengths.empty())
