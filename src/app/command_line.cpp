@@ -16,6 +16,7 @@
 #include "app/exit_codes.hpp"
 #include "app/bench_command.hpp"
 #include "app/plot_command.hpp"
+#include "app/reproduce_command.hpp"
 #include "app/run_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/theory_command.hpp"
@@ -60,6 +61,7 @@ int granule::app::run_granule(int argc, char** argv) {
   app.require_subcommand(1);
   granule::app::add_run_command(app);
   granule::app::add_sweep_command(app);
+  granule::app::add_reproduce_command(app);
   granule::app::add_bench_command(app);
   granule::app::add_theory_command(app);
   granule::app::add_analyze_command(app);

@@ -1,0 +1,86 @@
+// The studies `granule reproduce` knows, in the report's order; those not built yet say what exists
+// meanwhile, so that a reader sees them as "not yet reproduced" rather than missing.
+#include <cmath>
+#include <limits>
+
+#include "reproduce/study.hpp"
+
+namespace granule::reproduce {
+
+std::string scale_name(Scale scale) {
+  switch (scale) {
+    case Scale::tiny:
+      return "tiny";
+    case Scale::small:
+      return "small";
+    case Scale::medium:
+      return "medium";
+    case Scale::thesis:
+      return "thesis";
+  }
+  return "";
+}
+
+double summary_number(const PointOutputs& point, const char* key) {
+  const nlohmann::json* node = &point.summary;
+  std::string path = key;
+  std::size_t start = 0;
+  while (node != nullptr && start <= path.size()) {
+    const std::size_t dot = path.find('.', start);
+    const std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (node->is_object() && node->contains(part)) {
+      node = &(*node)[part];
+    } else if (node->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+               std::stoul(part) < node->size()) {
+      node = &(*node)[std::stoul(part)];
+    } else {
+      node = nullptr;
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return node != nullptr && node->is_number() ? node->get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+Claim estimate_claim(std::string id, std::string statement, std::string location, double expected, const Estimate& measured,
+                     double tolerance, std::string tolerance_reason, std::string checked, ToleranceKind kind) {
+  Claim c;
+  c.id = std::move(id);
+  c.statement = std::move(statement);
+  c.location = std::move(location);
+  c.expected = expected;
+  c.measured = measured.mean;
+  c.error = measured.error;
+  c.tolerance = tolerance;
+  c.tolerance_kind = kind;
+  c.tolerance_reason = std::move(tolerance_reason);
+  c.checked = std::move(checked);
+  return c;
+}
+
+namespace {
+
+Study not_yet(const char* name, const char* title, const char* part, const char* meanwhile) {
+  return {name, title, part, {}, {}, meanwhile, {}};
+}
+
+}  // namespace
+
+const std::vector<Study>& all_studies() {
+  static const std::vector<Study> studies{
+      validation_study(),
+      chapter2_study(),
+      chapter3_study(),
+      not_yet("chapter4", "Shear histories", "Chapter 4 (ramp, step, kick, plugged and quasihomogeneous starts)",
+              "the protocols run by hand: examples/chapter4/*.toml, docs/chapter4.md"),
+      not_yet("chapter5", "The velocity distribution f1", "Chapter 5 (cumulative sampling, Figs 5.1–5.11)",
+              "granule analyze f1 and granule plot f1 by hand: docs/f1.md"),
+      not_yet("appendix-b", "The b0(1) windows of Appendix B", "Appendix B (the window table; its unit mapping is unresolved)",
+              "granule analyze f1 with the windows of docs/f1.md"),
+      not_yet("appendix-c", "Spheres: Figs C.1–C.3", "Appendix C (3D free cooling, shear, ramp)",
+              "the runs by hand: examples/appendix_c/*.toml, docs/appendix_c.md"),
+  };
+  return studies;
+}
+
+}  // namespace granule::reproduce

@@ -1,0 +1,101 @@
+"""granule reproduce: `validation --scale tiny` writes report.md, a self-contained report.html (every
+picture inline, no external resource), claims.csv and claims.json that agree with each other; every
+verdict follows from its numbers by the documented rule (recomputed here independently); a second
+call skips the finished runs; a study not built yet and an unknown study are refused with a clear
+message and nothing written."""
+import csv
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+
+from harness import GRANULE, WORK, check, finish, granule
+
+VERDICTS = {"agrees", "disagrees", "not resolvable at this scale"}
+
+
+def verdict(claim):
+    """The rule of docs/reproduce.md, written anew from its words."""
+    e, m, s, t, kind = claim["expected"], claim["measured"], claim["error"], claim["tolerance"], claim["tolerance_kind"]
+    if claim["unresolvable"] or m is None or e is None:
+        return "not resolvable at this scale"
+    if kind == "relative":
+        low, high = e - t * abs(e), e + t * abs(e)
+    elif kind == "absolute":
+        low, high = e - t, e + t
+    else:
+        low, high = sorted((e / t, e * t))
+    two_sigma = 2 * abs(s) if s is not None else 0.0
+    if not low - two_sigma <= m <= high + two_sigma:
+        return "disagrees"
+    return "not resolvable at this scale" if two_sigma > high - low else "agrees"
+
+
+out = WORK / "report"
+first = granule("reproduce", "validation", "--scale", "tiny", "--out", out, "--jobs", "2")
+check(first.returncode == 0, f"reproduce validation exited {first.returncode}: {first.stderr[-2000:]}")
+for name in ("report.md", "report.html", "claims.csv", "claims.json"):
+    check((out / name).is_file(), f"{name} missing")
+check("claims (tiny scale):" in first.stdout, "no claim summary on the terminal")
+
+document = json.loads((out / "claims.json").read_text())
+claims = [c for s in document["studies"] for c in s["claims"]]
+check(len(claims) >= 8, f"only {len(claims)} claims")
+check(len({c["id"] for c in claims}) == len(claims), "claim ids are not unique")
+for c in claims:
+    check(c["verdict"] in VERDICTS, f"{c['id']}: verdict {c['verdict']!r}")
+    check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
+    check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
+    check(c["measured"] is not None or c["verdict"] != "agrees", f"{c['id']}: agrees without a number")
+
+with open(out / "claims.csv", newline="") as f:
+    rows = list(csv.DictReader(f))
+check([r["id"] for r in rows] == [c["id"] for c in claims], "claims.csv and claims.json list different claims")
+for r, c in zip(rows, claims):
+    check(r["verdict"] == c["verdict"], f"{r['id']}: csv verdict {r['verdict']} vs json {c['verdict']}")
+    expected = float(r["expected"])
+    check(math.isclose(expected, c["expected"], rel_tol=1e-12), f"{r['id']}: csv expected {expected} vs json {c['expected']}")
+
+page = (out / "report.html").read_text()
+images = re.findall(r'<img[^>]*src="([^"]*)"', page)
+check(len(images) >= 2, f"{len(images)} pictures in report.html")
+check(all(src.startswith("data:image/png;base64,") for src in images), "a picture of report.html is not inline")
+check(not re.search(r'(src|href)="(https?:|//|file:)', page), "report.html refers to an external resource")
+check("agree" in page and "Henderson" in page, "report.html lacks the claims table")
+markdown = (out / "report.md").read_text()
+check(all(c["id"].split(".")[0] in markdown or c["statement"][:20] in markdown for c in claims), "report.md lacks claims")
+
+again = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
+check(again.returncode == 0, f"second call exited {again.returncode}")
+check(again.stdout.count("skipped") >= 5 and "finished in" not in again.stdout, "second call ran points again")
+
+# Over MPI ranks (three: rank 0 hands out, two run): the same runs, hence the same numbers.
+mpi_out = WORK / "report_mpi"
+probe = granule("reproduce", "validation", "--scale", "tiny", "--out", WORK / "probe", "--mpi")
+if "built without MPI" in probe.stderr or shutil.which("mpirun") is None:
+    print("SKIPPED: reproduce --mpi (granule built without MPI or no mpirun)")
+else:
+    shutil.rmtree(WORK / "probe", ignore_errors=True)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    mpi = subprocess.run(["mpirun", "--oversubscribe", "-n", "3", GRANULE, "reproduce", "validation", "--scale", "tiny", "--out",
+                          str(mpi_out), "--mpi"], capture_output=True, text=True, timeout=300, env=env)
+    check(mpi.returncode == 0, f"reproduce --mpi exited {mpi.returncode}: {mpi.stderr[-2000:]}")
+    if mpi.returncode == 0:
+        with open(mpi_out / "claims.csv", newline="") as f:
+            mpi_rows = list(csv.DictReader(f))
+        numbers = ("id", "expected", "measured", "error", "verdict")
+        check([[r[k] for k in numbers] for r in mpi_rows] == [[r[k] for k in numbers] for r in rows],
+              "reproduce --mpi gives other numbers than --jobs 2")
+
+for study, message in (("chapter4", "not yet reproduced"), ("chapter9", "unknown study")):
+    target = WORK / study
+    refused = granule("reproduce", study, "--scale", "tiny", "--out", target)
+    check(refused.returncode == 2, f"reproduce {study} exited {refused.returncode}")
+    check(message in refused.stderr, f"reproduce {study}: {refused.stderr!r}")
+    check(not target.exists(), f"reproduce {study} wrote {target}")
+bad_scale = granule("reproduce", "validation", "--scale", "huge", "--out", WORK / "huge")
+check(bad_scale.returncode == 2 and "--scale huge" in bad_scale.stderr, f"--scale huge: {bad_scale.stderr!r}")
+
+finish()
