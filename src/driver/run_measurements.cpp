@@ -105,7 +105,7 @@ template <int D>
 void RunMeasurements<D>::resume(Simulation<D>& sim, const StateArchive& archive, const std::string& prefix) {
   set_up(sim);
   if (config_.fields.enabled) {
-    fields_schedule_.restore(archive, prefix + "fields_schedule/");
+    fields_schedule_.restore(archive, prefix + "fields_schedule/", sim);
     interval_moments_->restore(archive, prefix + "interval_moments/");
     if (collisional_) collisional_->restore(archive, prefix + "collisional_stress/");
     interval_start_t_ = archive.scalar(prefix + "interval_start_t");
@@ -125,7 +125,7 @@ void RunMeasurements<D>::resume(Simulation<D>& sim, const StateArchive& archive,
     if (statistics_started_) {
       windows_ = Schedule{config_.collisions.window_collisions_per_particle, std::nullopt};
       windows_.start(config_.system.particles);
-      windows_.restore(archive, prefix + "windows/");
+      windows_.restore(archive, prefix + "windows/", sim);
       if (impacts_) sim.add_observer(impacts_.get());
     }
   }

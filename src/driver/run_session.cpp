@@ -129,8 +129,8 @@ void RunSession<D>::restore_production(const StateArchive& archive) {
   snapshotting_ = Schedule{config_.snapshot_every_collisions_per_particle, config_.snapshot_every_time};
   sampling_.start(system.particles);
   snapshotting_.start(system.particles);
-  sampling_.restore(archive, "run/sampling/");
-  snapshotting_.restore(archive, "run/snapshotting/");
+  sampling_.restore(archive, "run/sampling/", *sim_);
+  snapshotting_.restore(archive, "run/snapshotting/", *sim_);
   // A run extended past its old end has new run.* limits: the schedules continue regardless.
   snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", archive.integer("run/snapshot_frames"));
   last_snapshot_events_ = archive.integer("run/last_snapshot_events");

@@ -46,9 +46,7 @@ struct Schedule {
   template <typename Engine>
   void advance(const Engine& sim) {
     if (by_collisions() && sim.collisions() >= next_collisions) {
-      const double periods =
-          std::floor(static_cast<double>(sim.collisions() - origin_collisions) / (*every_c * static_cast<double>(particles)));
-      next_collisions = std::max(sim.collisions() + 1, origin_collisions + interval_collisions(periods + 1.0));
+      next_collisions = collision_trigger_after(sim.collisions());
     }
     if (every_t && sim.time() >= next_time) {
       next_time = trigger_after(sim.time());
@@ -67,18 +65,37 @@ struct Schedule {
     archive.put_scalar(prefix + "next_time", next_time);
     archive.put_integer(prefix + "skipped", skipped);
     archive.put_integer(prefix + "rounded_up", rounded_up ? 1 : 0);
+    archive.put_scalar(prefix + "every_collisions_per_particle", every_c.value_or(0.0));
+    archive.put_scalar(prefix + "every_time", every_t.value_or(0.0));
   }
-  void restore(const StateArchive& archive, const std::string& prefix) {
+  // The saved triggers belong to the saved intervals.  A run resumed with other intervals (`--set`
+  // on `--resume`) keeps the origin and fires next at the first trigger of the new intervals after
+  // the present: taking the old triggers over wrote nothing when the old schedule was off.
+  // (Checkpoints from before the intervals were saved keep their triggers.)
+  template <typename Engine>
+  void restore(const StateArchive& archive, const std::string& prefix, const Engine& sim) {
     origin_collisions = archive.integer(prefix + "origin_collisions");
     origin_time = archive.scalar(prefix + "origin_time");
     next_collisions = archive.integer(prefix + "next_collisions");
     next_time = archive.scalar(prefix + "next_time");
     skipped = archive.integer(prefix + "skipped");
     rounded_up = archive.integer(prefix + "rounded_up") != 0;
+    const std::string saved_c = prefix + "every_collisions_per_particle", saved_t = prefix + "every_time";
+    if (!archive.contains(saved_c)) return;
+    if (archive.scalar(saved_c) != every_c.value_or(0.0)) {
+      next_collisions = by_collisions() ? collision_trigger_after(sim.collisions()) : kNoLimit;
+    }
+    if (archive.scalar(saved_t) != every_t.value_or(0.0)) next_time = every_t ? trigger_after(sim.time()) : kInf;
   }
 
  private:
   bool by_collisions() const { return every_c && *every_c > 0.0; }
+  // The first trigger by collisions strictly after `collisions`.
+  std::int64_t collision_trigger_after(std::int64_t collisions) const {
+    const double periods =
+        std::floor(static_cast<double>(collisions - origin_collisions) / (*every_c * static_cast<double>(particles)));
+    return std::max(collisions + 1, origin_collisions + interval_collisions(periods + 1.0));
+  }
   // The first trigger strictly after t.
   double trigger_after(double t) {
     const double next = origin_time + (std::floor((t - origin_time) / *every_t) + 1.0) * *every_t;
