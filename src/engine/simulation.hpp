@@ -278,6 +278,8 @@ class Simulation {
   // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach, Visit&& visit) const;
+  // Whether a cell is away from every face of the grid: its block then sees no image.
+  bool is_interior(const std::array<int, D>& cell) const;
   // The image of a partner at lab offset `offset` from a particle in contact with it.
   struct PartnerImage {
     int image_y;  // −1, 0, +1: which vertical image
