@@ -33,6 +33,11 @@ constexpr double kBandFraction = 0.2;  // the densest band is L_y/5 wide (FlowCl
 constexpr double kUniformBand = 0.2, kUniformBandTolerance = 0.05;
 constexpr double kPluggedBand = 0.75, kPluggedBandTolerance = 0.25;  // [0.5, 1]
 
+// Fig 4.7: after 20 collisions per particle two dense streamwise layers span the box.  A layer is a
+// run of rows denser than twice the mean (the ramp's layers reach 4–8 ρ̄, docs/chapter4.md); the
+// frames of fields.h5 within ±2.5 c of c = 20 are averaged.
+constexpr double kEarlyLayersC = 20.0, kEarlyLayersHalfWidth = 2.5, kLayerDensity = 2.0;
+
 // One history: its run group and how it differs from the cold start.
 struct History {
   const char* group;
@@ -115,6 +120,7 @@ LateWindow late_window(const PointOutputs& p, double protocol_end_t) {
 // What one history shows, one entry per seed.
 struct HistoryMeasures {
   std::vector<double> band, temperature, centre_distance, temperature_ratio, flux_towards;
+  std::vector<double> early_layers;  // dense layers of ρ(y) at c ≈ kEarlyLayersC (Fig 4.7)
   int particles = 0;
   double diameter = 0.0;
   LateWindow window;  // of the first seed, for the report
@@ -136,6 +142,9 @@ HistoryMeasures measure(const History& h, const GroupOutputs& group) {
     m.centre_distance.push_back(band.distance_from_middle);
     m.temperature_ratio.push_back(band.temperature_ratio);
     m.flux_towards.push_back(band.flux_towards_band);
+    const StreamwiseProfiles early =
+        read_streamwise_profiles(p->directory + "/fields.h5", kEarlyLayersC - kEarlyLayersHalfWidth, kEarlyLayersC + kEarlyLayersHalfWidth);
+    m.early_layers.push_back(early.frames > 0 ? static_cast<double>(dense_layers(early, kLayerDensity)) : double{NAN});
   }
   return m;
 }
@@ -254,6 +263,21 @@ StudyOutcome evaluate_chapter4(Scale scale, const StudyOutputs& outputs) {
   out.claims.push_back(band_claim(ramp, measured["ramp"], "chapter4.ramp.plug",
                                   "a static gas sheared incrementally forms two dense streamwise layers that converge into a plug",
                                   "thesis §4.3, Figs 4.7–4.8", true));
+  Claim layers = estimate_claim(
+      "chapter4.ramp.two_layers", "ramp from rest: after 20 collisions per particle two dense streamwise layers span the system",
+      "thesis §4.3, Fig 4.7 and its caption", 2.0, mean_over(measured["ramp"].early_layers), 0.5,
+      "a count: exactly two layers (a layer is a run of rows of fields.h5 denser than twice the mean)",
+      fmt::format("dense layers of ρ(y) over fields.h5 frames with c ∈ [{}, {}], {}", kEarlyLayersC - kEarlyLayersHalfWidth,
+                  kEarlyLayersC + kEarlyLayersHalfWidth, runs_text(ramp, measured["ramp"])),
+      ToleranceKind::absolute);
+  if (measured["ramp"].particles != kThesisParticles) {
+    // The heated regions grow from the boundaries and the layers at their edges meet in the centre
+    // after a number of collisions that grows with the box in mean free paths, L/l ∝ √N.
+    layers.unresolvable = fmt::format(
+        "the c at which the layers meet grows with L/l ∝ √N: Fig 4.7's c = 20 belongs to N = 20000 (N = {} here)",
+        measured["ramp"].particles);
+  }
+  out.claims.push_back(layers);
   add_plug_claims(ramp, measured["ramp"], "chapter4.ramp", "thesis §4.3, Fig 4.8", out);
 
   const History& step = history("step");
@@ -289,7 +313,6 @@ StudyOutcome evaluate_chapter4(Scale scale, const StudyOutputs& outputs) {
                                .x_label = "c (collisions per particle)",
                                .y_label = "mass fraction in the densest L_y/5 band",
                                .series = bands});
-  const double early_c = by_scale(scale, 5.0, 20.0, 20.0, 20.0);
   const HistoryMeasures& r = measured["ramp"];
   out.figures.push_back(Figure{
       .name = "chapter4_ramp_layers",
@@ -298,7 +321,8 @@ StudyOutcome evaluate_chapter4(Scale scale, const StudyOutputs& outputs) {
                  "particle (two layers, Fig 4.7) and late (converged to a plug in the centre, Fig 4.8)",
       .x_label = "y / L_y",
       .y_label = "ρ(y) / ρ̄",
-      .series = {density_profile(outputs.at("ramp"), early_c - 2.5, early_c + 2.5, fmt::format("c ≈ {}", early_c)),
+      .series = {density_profile(outputs.at("ramp"), kEarlyLayersC - kEarlyLayersHalfWidth, kEarlyLayersC + kEarlyLayersHalfWidth,
+                                 fmt::format("c ≈ {}", kEarlyLayersC)),
                  density_profile(outputs.at("ramp"), r.window.c_from, r.window.c_to,
                                  fmt::format("c ∈ [{:.3g}, {:.3g}]", r.window.c_from, r.window.c_to))}});
   if (c.particles != kThesisParticles) {

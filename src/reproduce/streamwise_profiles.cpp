@@ -84,4 +84,18 @@ DensestBand densest_band(const StreamwiseProfiles& p, int band_rows) {
   return band;
 }
 
+int dense_layers(const StreamwiseProfiles& p, double threshold) {
+  const std::size_t rows = p.density.size();
+  double mean = 0.0;
+  for (double d : p.density) mean += d / static_cast<double>(rows);
+  int layers = 0, dense = 0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    const bool here = p.density[r] > threshold * mean;
+    dense += here ? 1 : 0;
+    // A layer starts at a dense row whose lower neighbour (periodic) is not dense.
+    layers += here && !(p.density[(r + rows - 1) % rows] > threshold * mean) ? 1 : 0;
+  }
+  return dense == static_cast<int>(rows) ? 1 : layers;  // every row dense: one layer, no edge
+}
+
 }  // namespace granule::reproduce

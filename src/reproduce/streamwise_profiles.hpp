@@ -33,4 +33,8 @@ struct DensestBand {
 };
 DensestBand densest_band(const StreamwiseProfiles& p, int band_rows);
 
+// The number of dense layers: runs of consecutive rows (periodic in y) whose density exceeds
+// `threshold` times the mean; 0 without profiles.
+int dense_layers(const StreamwiseProfiles& p, double threshold);
+
 }  // namespace granule::reproduce
