@@ -139,8 +139,9 @@ GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& comple
 
 // The study's analyses of every usable point of the group, each once (its output tells).  A failed
 // analysis is reported; the claims that need it then find no number.
-void run_point_analyses(const Study& study, const GroupRun& g, const GroupOutputs& outputs) {
-  for (const PointAnalysis& analysis : study.analyses) {
+void run_point_analyses(const Study& study, Scale scale, const GroupRun& g, const GroupOutputs& outputs) {
+  if (!study.analyses) return;
+  for (const PointAnalysis& analysis : study.analyses(scale)) {
     if (analysis.group != g.group) continue;
     for (const PointOutputs& p : outputs) {
       if (!p.usable() || fs::exists(fs::path(p.directory) / analysis.output)) continue;
@@ -203,7 +204,7 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
         if (g.study != study) continue;
         std::string line;
         outputs[g.group] = read_group(g, line, complete, r.run_seconds);
-        run_point_analyses(*study, g, outputs[g.group]);
+        run_point_analyses(*study, scale, g, outputs[g.group]);
         section.run_lines.push_back(line);
       }
       fmt::print("reproduce: analysing {}\n", study->name);

@@ -282,17 +282,21 @@ StudyOutcome evaluate_chapter2(Scale scale, const StudyOutputs& outputs) {
   return out;
 }
 
-}  // namespace
-
-Study chapter2_study() {
+std::vector<PointAnalysis> chapter2_analyses(Scale) {
   std::vector<PointAnalysis> spectra;
   for (const FreeSystem& system : kSystems) {
     spectra.push_back({system.group,
                        {"analyze", "spectra", "{run}/snapshots.h5", "--frames", "-1", "--out", "{run}/spectra.h5"},
                        kSpectraTable});
   }
+  return spectra;
+}
+
+}  // namespace
+
+Study chapter2_study() {
   return {"chapter2", "Free cooling: Systems I and II", "Chapter 2 (thesis §2.1–2.4)", chapter2_runs, evaluate_chapter2, "",
-          spectra};
+          chapter2_analyses};
 }
 
 }  // namespace granule::reproduce

@@ -84,7 +84,8 @@ struct Study {
   std::function<std::vector<RunGroup>(Scale)> runs;
   std::function<StudyOutcome(Scale, const StudyOutputs&)> evaluate;
   std::string not_yet_reproduced;
-  std::vector<PointAnalysis> analyses;
+  // By scale, since an analysis's arguments may be in the run's units (the f1 windows of chapter5).
+  std::function<std::vector<PointAnalysis>(Scale)> analyses;
   bool built() const { return static_cast<bool>(runs); }
 };
 
@@ -103,5 +104,7 @@ Claim estimate_claim(std::string id, std::string statement, std::string location
 Study validation_study();
 Study chapter2_study();
 Study chapter3_study();
+Study chapter4_study();
+Study chapter5_study();
 
 }  // namespace granule::reproduce
