@@ -75,10 +75,8 @@ const std::vector<Study>& all_studies() {
               "the protocols run by hand: examples/chapter4/*.toml, docs/chapter4.md"),
       not_yet("chapter5", "The velocity distribution f1", "Chapter 5 (cumulative sampling, Figs 5.1–5.11)",
               "granule analyze f1 and granule plot f1 by hand: docs/f1.md"),
-      not_yet("appendix-b", "The b0(1) windows of Appendix B", "Appendix B (the window table; its unit mapping is unresolved)",
-              "granule analyze f1 with the windows of docs/f1.md"),
-      not_yet("appendix-c", "Spheres: Figs C.1–C.3", "Appendix C (3D free cooling, shear, ramp)",
-              "the runs by hand: examples/appendix_c/*.toml, docs/appendix_c.md"),
+      appendix_b_study(),
+      appendix_c_study(),
   };
   return studies;
 }

@@ -103,5 +103,7 @@ Claim estimate_claim(std::string id, std::string statement, std::string location
 Study validation_study();
 Study chapter2_study();
 Study chapter3_study();
+Study appendix_b_study();
+Study appendix_c_study();
 
 }  // namespace granule::reproduce
