@@ -239,18 +239,25 @@ void add_shear(const GroupOutputs& group, StudyOutcome& out) {
                                         layers));
 }
 
-// A dense streamwise plug in the centre: a layer normal to y (its profile carries the structure) whose
-// densest fifth sits at y = L/2.
+// A dense streamwise plug in the centre: structure uniform along the flow (the flow-averaged map holds
+// the cells' excess variance) whose densest fifth of the y profile sits at y = L/2.
 void add_plug_claims(const std::string& prefix, const std::string& figure, const std::string& location,
                      const std::vector<DensityLayers>& layers, bool periodic, StudyOutcome& out) {
   const Estimate share = over_resolved(
-      layers, [](const DensityLayers& d) { return d.clustered(); }, [](const DensityLayers& d) { return d.layer_share(1); });
-  Claim layer = estimate_claim(
-      prefix + ".plug_is_streamwise_layer",
-      figure + ": a dense streamwise plug forms: the density structure is a layer normal to the gradient y", location, 1.0, share,
-      0.5, "a streamwise plug is uniform along the flow (and z): its y profile holds all the excess variance (1); 0.5 parts it from other structure",
-      layers_checked(layers, "share of the cells' excess density variance held by the profile along y"), ToleranceKind::absolute);
-  if (share.count == 0) layer.unresolvable = layers.empty() ? "no fields.h5 could be read" : "the density is homogeneous within noise";
+      layers, [](const DensityLayers& d) { return d.clustered(); }, [](const DensityLayers& d) { return d.streamwise_share(); });
+  Claim streamwise = estimate_claim(
+      prefix + ".plug_is_streamwise",
+      figure + ": a dense streamwise plug forms: the density structure does not vary along the flow x", location, 1.0, share,
+      0.5,
+      "structure uniform along the flow (a plug, whether a layer or a tube) puts all the excess variance into the "
+      "flow-averaged map (1), clusters across the flow little of it; 0.5 parts the two",
+      layers_checked(layers, "share of the cells' excess density variance held by the map averaged along x"),
+      ToleranceKind::absolute);
+  if (!layers.empty() && layers.front().dimension == 3) {
+    streamwise.checked += fmt::format("; of it the y profile alone (a layer normal to y) holds {:.2g}, the z profile {:.2g}",
+                                      layers.front().layer_share(1), layers.front().layer_share(2));
+  }
+  if (share.count == 0) streamwise.unresolvable = layers.empty() ? "no fields.h5 could be read" : "the density is homogeneous within noise";
   const Estimate offset = over_resolved(
       layers, [](const DensityLayers& d) { return d.layered(1); },
       [periodic](const DensityLayers& d) {
@@ -263,7 +270,7 @@ void add_plug_claims(const std::string& prefix, const std::string& figure, const
       ToleranceKind::absolute);
   if (offset.count == 0)
     centre.unresolvable = layers.empty() ? "no fields.h5 could be read" : "the y profile is flat within noise: no plug to place";
-  out.claims.push_back(layer);
+  out.claims.push_back(streamwise);
   out.claims.push_back(centre);
 }
 

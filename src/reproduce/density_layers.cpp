@@ -77,6 +77,11 @@ DensityLayers read_density_layers(const std::string& fields_path) {
   d.map_homogeneous = structure / cell_mean;
   d.map_excess = relative_variance(last, cell_mean) - d.map_homogeneous;
   d.map_noise_sd = variance_noise_sd(structure / cell_mean, grid.cells());
+  std::vector<double> flow_sums(static_cast<std::size_t>(grid.ny) * grid.nz, 0.0);
+  for (std::size_t cell = 0; cell < last.size(); ++cell) flow_sums[cell / grid.nx] += last[cell];  // x fastest
+  const double flow_mean = particles / static_cast<double>(flow_sums.size());
+  d.flow_averaged_excess = relative_variance(flow_sums, flow_mean) - structure / flow_mean;
+  d.flow_averaged_noise_sd = variance_noise_sd(structure / flow_mean, flow_sums.size());
   const double lengths[3] = {grid.length_x, grid.length_y, grid.length_z};
   for (int axis = 0; axis < 3; ++axis) {
     const std::vector<double> sums = profile(last, d.cells, axis);

@@ -21,6 +21,9 @@ struct DensityLayers {
   double map_homogeneous = 0.0;  // that noise: var(n/n̄) of the cells of a gas structured as the start
   // The same for the profiles along x, y, z (counts summed over the other axes; nz = 1 in 2D).
   std::array<double, 3> profile_excess{}, profile_noise_sd{};
+  // The same for the map averaged along the flow x (over (y, z) in 3D, the y profile in 2D): what a
+  // structure uniform along the flow (a streamwise plug, layer or tube) holds of the cells' variance.
+  double flow_averaged_excess = 0.0, flow_averaged_noise_sd = 0.0;
   std::array<std::vector<double>, 3> profiles;  // ρ/ρ̄ along each axis at the last frame, cell centres in `positions`
   std::array<std::vector<double>, 3> positions;
 
@@ -32,6 +35,8 @@ struct DensityLayers {
   // The fraction of the cells' excess variance that layers normal to `axis` carry: 1 for pure layers
   // (the profile holds all of it), ≈ 0 for structure that averages out along the other axes.
   double layer_share(int axis) const { return profile_excess[axis] / map_excess; }
+  // The fraction held by the flow-averaged map: 1 for structure that does not vary along x.
+  double streamwise_share() const { return flow_averaged_excess / map_excess; }
   // The centre of the densest band of `fraction` of the rows along `axis` (wrapping round when
   // `periodic`), in units of the box side: in [0, 1).
   double densest_band_centre(int axis, double fraction, bool periodic) const;
