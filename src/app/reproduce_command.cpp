@@ -55,10 +55,6 @@ std::vector<const Study*> selected_studies(const std::string& what) {
   if (chosen.empty()) {
     throw CommandFailure{kExitBadInput, fmt::format("unknown study \"{}\": allowed all, {}", what, fmt::join(names, ", "))};
   }
-  if (what != "all" && !chosen.front()->built()) {
-    throw CommandFailure{kExitBadInput, fmt::format("{} ({}) is not yet reproduced by granule reproduce; meanwhile: {}", what,
-                                                    chosen.front()->thesis_part, chosen.front()->not_yet_reproduced)};
-  }
   return chosen;
 }
 
@@ -80,7 +76,6 @@ struct GroupRun {
 std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, Scale scale, const fs::path& out) {
   std::vector<GroupRun> groups;
   for (const Study* study : studies) {
-    if (!study->built()) continue;
     for (const RunGroup& g : study->runs(scale)) {
       sweep::SweepSpecResult parsed = sweep::parse_sweep_spec(g.sweep_toml);
       // The catalogue's own specs: a refusal is a bug of the study, not the user's input.
@@ -198,24 +193,22 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
   bool complete = true;
   for (const Study* study : studies) {
     StudySection section{study, {}, {}};
-    if (study->built()) {
-      StudyOutputs outputs;
-      for (const GroupRun& g : groups) {
-        if (g.study != study) continue;
-        std::string line;
-        outputs[g.group] = read_group(g, line, complete, r.run_seconds);
-        run_point_analyses(*study, scale, g, outputs[g.group]);
-        section.run_lines.push_back(line);
-      }
-      fmt::print("reproduce: analysing {}\n", study->name);
-      try {
-        section.outcome = study->evaluate(scale, outputs);
-      } catch (const std::exception& error) {
-        // Missing or unreadable outputs (failed runs): the study is reported as not evaluated.
-        section.outcome.notes.push_back(fmt::format("the study could not be evaluated: {}", error.what()));
-      }
-      draw_figures(out, section.outcome);
+    StudyOutputs outputs;
+    for (const GroupRun& g : groups) {
+      if (g.study != study) continue;
+      std::string line;
+      outputs[g.group] = read_group(g, line, complete, r.run_seconds);
+      run_point_analyses(*study, scale, g, outputs[g.group]);
+      section.run_lines.push_back(line);
     }
+    fmt::print("reproduce: analysing {}\n", study->name);
+    try {
+      section.outcome = study->evaluate(scale, outputs);
+    } catch (const std::exception& error) {
+      // Missing or unreadable outputs (failed runs): the study is reported as not evaluated.
+      section.outcome.notes.push_back(fmt::format("the study could not be evaluated: {}", error.what()));
+    }
+    draw_figures(out, section.outcome);
     r.sections.push_back(std::move(section));
   }
   r.wall_seconds = elapsed();  // runs, analyses and figures of this call

@@ -81,22 +81,9 @@ struct CoolingMeasures {
 
 CoolingMeasures measure_cooling(const PointOutputs& p, double early_to_c) {
   CoolingMeasures m;
-  std::vector<double> c, log_temperature, log_energy;
-  for (const DiagnosticsSample& s : p.samples) {
-    if (s.c >= 1.0 && s.c <= early_to_c) {
-      c.push_back(s.c);
-      log_temperature.push_back(std::log(s.temperature));
-      log_energy.push_back(std::log(s.kinetic_energy));
-    }
-  }
-  m.early_slope = fit_line(c, log_temperature).slope;
-  const LineFit energy = fit_line(c, log_energy);
-  for (const DiagnosticsSample& s : p.samples) {
-    if (s.c > 1.0 && std::log(s.kinetic_energy) - (energy.intercept + energy.slope * s.c) > std::log(kOnsetExcess)) {
-      m.onset_c = s.c;
-      break;
-    }
-  }
+  const EarlyDecay decay = early_decay(p.samples, early_to_c, kOnsetExcess);
+  m.early_slope = decay.temperature_slope;
+  m.onset_c = decay.onset_c;
   std::vector<double> log_t, log_late;
   for (const DiagnosticsSample& s : p.samples) {
     if (std::isfinite(m.onset_c) && s.c >= 2.0 * m.onset_c && s.t > 0.0) {
@@ -295,7 +282,7 @@ std::vector<PointAnalysis> chapter2_analyses(Scale) {
 }  // namespace
 
 Study chapter2_study() {
-  return {"chapter2", "Free cooling: Systems I and II", "Chapter 2 (thesis §2.1–2.4)", chapter2_runs, evaluate_chapter2, "",
+  return {"chapter2", "Free cooling: Systems I and II", "Chapter 2 (thesis §2.1–2.4)", chapter2_runs, evaluate_chapter2,
           chapter2_analyses};
 }
 

@@ -99,7 +99,7 @@ Study chapter3_study() {
           "Chapter 3 (thesis §3.1.1, (3.1), (3.2), Fig 3.2)",
           chapter3_runs,
           evaluate_chapter3,
-          "", {}};
+          {}};
 }
 
 }  // namespace granule::reproduce

@@ -342,7 +342,7 @@ Study chapter4_study() {
           "Chapter 4 (§4.2–4.3: cold and hot starts, ramp from rest, step, kick; Figs 4.5–4.8)",
           chapter4_runs,
           evaluate_chapter4,
-          "", {}};
+          {}};
 }
 
 }  // namespace granule::reproduce

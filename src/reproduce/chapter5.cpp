@@ -324,7 +324,6 @@ Study chapter5_study() {
           "Chapter 5 (cumulative sampling in shear, (5.27)–(5.29), Figs 5.5, 5.7, 5.9–5.11)",
           chapter5_runs,
           evaluate_chapter5,
-          "",
           chapter5_analyses};
 }
 

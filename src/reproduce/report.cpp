@@ -119,10 +119,6 @@ std::string markdown(const Report& report) {
       report.scale, time_text(report), report.command, tally_text(report));
   for (const StudySection& s : report.sections) {
     md += fmt::format("\n## {} — {}\n\n{}\n\n", s.study->name, s.study->title, s.study->thesis_part);
-    if (!s.study->built()) {
-      md += fmt::format("**Not yet reproduced.** Meanwhile: {}.\n", s.study->not_yet_reproduced);
-      continue;
-    }
     for (const std::string& line : s.run_lines) md += fmt::format("- runs: {}\n", line);
     for (const std::string& note : s.outcome.notes) md += fmt::format("- note: {}\n", note);
     md += "\n|";
@@ -147,7 +143,7 @@ constexpr const char* kStyle =
 table{border-collapse:collapse;width:100%;font-size:0.85em;margin:1em 0}th,td{border:1px solid #ccc;padding:4px 6px;vertical-align:top;text-align:left}
 th{background:#f0f0f0}td.num{white-space:nowrap}tr.agrees td.verdict{background:#d8f0d8}tr.disagrees td.verdict{background:#f6d0d0}
 tr.not-resolvable td.verdict{background:#eee}figure{margin:1.5em 0;text-align:center}figure img{max-width:760px;width:100%}
-figcaption{font-size:0.9em;color:#444}.summary{font-size:1.1em;font-weight:bold}.todo{background:#fff6d8;padding:0.5em 1em}code{background:#f4f4f4})";
+figcaption{font-size:0.9em;color:#444}.summary{font-size:1.1em;font-weight:bold}code{background:#f4f4f4})";
 
 std::string verdict_class(Verdict v) {
   switch (v) {
@@ -172,11 +168,6 @@ std::string html(const fs::path& dir, const Report& report) {
   for (const StudySection& s : report.sections) {
     page += fmt::format("<h2>{} — {}</h2>\n<p>{}</p>\n", html_escape(s.study->name), html_escape(s.study->title),
                         html_escape(s.study->thesis_part));
-    if (!s.study->built()) {
-      page += fmt::format("<p class=\"todo\"><b>Not yet reproduced.</b> Meanwhile: {}.</p>\n",
-                          html_escape(s.study->not_yet_reproduced));
-      continue;
-    }
     page += "<ul>";
     for (const std::string& line : s.run_lines) page += "<li>runs: " + html_escape(line) + "</li>";
     for (const std::string& note : s.outcome.notes) page += "<li>note: " + html_escape(note) + "</li>";
@@ -259,8 +250,6 @@ std::string claims_json(const Report& report) {
     }
     studies.push_back({{"name", s.study->name},
                        {"title", s.study->title},
-                       {"built", s.study->built()},
-                       {"not_yet_reproduced", s.study->not_yet_reproduced},
                        {"claims", claims}});
   }
   j["studies"] = studies;
@@ -297,7 +286,6 @@ void write_report(const fs::path& dir, const Report& report) {
 std::vector<std::string> claim_summary_lines(const Report& report) {
   std::vector<std::string> lines;
   for (const StudySection& s : report.sections) {
-    if (!s.study->built()) lines.push_back(fmt::format("{:<29} {}: not yet reproduced", "-", s.study->name));
     for (const Claim& c : s.outcome.claims) {
       lines.push_back(fmt::format("{:<29} {}: {} (expected {}, {})", verdict_text(judge(c)), c.id, measured_text(c),
                                   number(c.expected), tolerance_text(c)));

@@ -95,4 +95,25 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   return fit;
 }
 
+EarlyDecay early_decay(const std::vector<DiagnosticsSample>& samples, double early_to_c, double excess) {
+  EarlyDecay decay;
+  std::vector<double> c, log_temperature, log_energy;
+  for (const DiagnosticsSample& s : samples) {
+    if (s.c >= 1.0 && s.c <= early_to_c) {
+      c.push_back(s.c);
+      log_temperature.push_back(std::log(s.temperature));
+      log_energy.push_back(std::log(s.kinetic_energy));
+    }
+  }
+  decay.temperature_slope = fit_line(c, log_temperature).slope;
+  const LineFit energy = fit_line(c, log_energy);
+  for (const DiagnosticsSample& s : samples) {
+    if (s.c > 1.0 && std::log(s.kinetic_energy) - (energy.intercept + energy.slope * s.c) > std::log(excess)) {
+      decay.onset_c = s.c;
+      break;
+    }
+  }
+  return decay;
+}
+
 }  // namespace granule::reproduce

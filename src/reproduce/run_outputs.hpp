@@ -66,4 +66,14 @@ struct LineFit {
 };
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
+// The early exponential decay of a freely cooling gas and where it ends (thesis §2.4.2, Fig 2.5):
+// the slope of ln T̄ (`temperature`) against c over c ∈ [1, early_to_c], and the first c > 1 at
+// which the kinetic energy exceeds the extrapolation of its own exponential fit over that window
+// by the factor `excess` (the change of slope of Fig 2.5; NaN if it never does).
+struct EarlyDecay {
+  double temperature_slope = std::numeric_limits<double>::quiet_NaN();
+  double onset_c = std::numeric_limits<double>::quiet_NaN();
+};
+EarlyDecay early_decay(const std::vector<DiagnosticsSample>& samples, double early_to_c, double excess);
+
 }  // namespace granule::reproduce

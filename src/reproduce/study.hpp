@@ -80,13 +80,10 @@ struct Study {
   std::string name;  // the command's word: "validation", "chapter2", ...
   std::string title;
   std::string thesis_part;  // "Chapter 2 (free cooling, Systems I and II)"
-  // Empty when the study is not built yet: then `not_yet_reproduced` says what exists meanwhile.
   std::function<std::vector<RunGroup>(Scale)> runs;
   std::function<StudyOutcome(Scale, const StudyOutputs&)> evaluate;
-  std::string not_yet_reproduced;
   // By scale, since an analysis's arguments may be in the run's units (the f1 windows of chapter5).
   std::function<std::vector<PointAnalysis>(Scale)> analyses;
-  bool built() const { return static_cast<bool>(runs); }
 };
 
 // The catalogue, in the report's order (catalogue.cpp).
@@ -106,5 +103,7 @@ Study chapter2_study();
 Study chapter3_study();
 Study chapter4_study();
 Study chapter5_study();
+Study appendix_b_study();
+Study appendix_c_study();
 
 }  // namespace granule::reproduce

@@ -227,7 +227,7 @@ Study validation_study() {
           "beside the thesis: hard-disk equilibrium, Haff cooling, dilute shear",
           validation_runs,
           evaluate_validation,
-          "", {}};
+          {}};
 }
 
 }  // namespace granule::reproduce
