@@ -89,6 +89,22 @@ else:
         check([[r[k] for k in numbers] for r in mpi_rows] == [[r[k] for k in numbers] for r in rows],
               "reproduce --mpi gives other numbers than --jobs 2")
 
+def tiny_study_claims(study):
+    """Runs one study at tiny scale; returns its claims (in order) and report.md, or None if it failed."""
+    target = WORK / study
+    run = granule("reproduce", study, "--scale", "tiny", "--out", target, "--jobs", "2")
+    check(run.returncode == 0, f"reproduce {study} exited {run.returncode}: {run.stderr[-2000:]}")
+    if run.returncode != 0:
+        return None
+    sections = [s for s in json.loads((target / "claims.json").read_text())["studies"] if s["name"] == study]
+    check(len(sections) == 1, f"{study}: not one section in claims.json")
+    found = [c for s in sections for c in s["claims"]]
+    for c in found:
+        check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
+        check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
+    return found, (target / "report.md").read_text()
+
+
 # Chapters 4 and 5: every claim the studies promise is there, with a number (chapter 4's come from
 # the time series and fields.h5 of every tiny run), a verdict that follows from it, and the figures
 # with their thesis numbers in report.md.
@@ -103,21 +119,14 @@ CHAPTER_CLAIMS = {
 }
 CHAPTER_FIGURES = {"chapter4": ["Figs 4.5–4.8", "Figs 4.7–4.8"], "chapter5": ["Fig 5.9", "Fig 5.10", "Fig 5.11"]}
 for study, ids in CHAPTER_CLAIMS.items():
-    target = WORK / study
-    run = granule("reproduce", study, "--scale", "tiny", "--out", target, "--jobs", "2")
-    check(run.returncode == 0, f"reproduce {study} exited {run.returncode}: {run.stderr[-2000:]}")
-    if run.returncode != 0:
+    result = tiny_study_claims(study)
+    if result is None:
         continue
-    section = [s for s in json.loads((target / "claims.json").read_text())["studies"] if s["name"] == study]
-    check(len(section) == 1, f"{study} missing in claims.json")
-    found = [c for s in section for c in s["claims"]]
+    found, markdown = result
     check([c["id"] for c in found] == ids, f"{study} claims {[c['id'] for c in found]}")
     for c in found:
-        check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
-        check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
         if study == "chapter4" or not c["unresolvable"]:
             check(c["measured"] is not None, f"{c['id']}: no measured number")
-    markdown = (target / "report.md").read_text()
     for figure in CHAPTER_FIGURES[study]:
         check(figure in markdown, f"{study}: report.md lacks {figure}")
     # report.md escapes the | of a statement inside its table.
@@ -137,20 +146,15 @@ APPENDIX_CLAIMS = {
 APPENDIX_FIGURES = {"appendix-b": "Appendix B", "appendix-c": "Fig C."}
 appendix = {}
 for study, ids in APPENDIX_CLAIMS.items():
-    target = WORK / study
-    run = granule("reproduce", study, "--scale", "tiny", "--out", target, "--jobs", "2")
-    check(run.returncode == 0, f"reproduce {study} exited {run.returncode}: {run.stderr[-2000:]}")
-    if run.returncode != 0:
+    result = tiny_study_claims(study)
+    if result is None:
         continue
-    sections = [s for s in json.loads((target / "claims.json").read_text())["studies"] if s["name"] == study]
-    check(len(sections) == 1, f"{study}: not one section in claims.json")
-    got = {c["id"]: c for s in sections for c in s["claims"]}
+    target = WORK / study
+    got = {c["id"]: c for c in result[0]}
+    markdown = result[1]
     appendix.update(got)
     check(sorted(got) == sorted(ids), f"{study}: claims {sorted(got)}, expected {sorted(ids)}")
-    markdown = (target / "report.md").read_text()
     for c in got.values():
-        check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
-        check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
         check(c["statement"] in markdown.replace("\\|", "|"), f"{c['id']}: not in report.md")
     figures = sorted((target / "figures").glob("*.json"))
     check(len(figures) >= 4, f"{study}: {len(figures)} figures")
