@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 namespace granule {
@@ -29,9 +30,7 @@ std::int64_t EventQueue::bucket_of(double time) const {
 
 void EventQueue::reset(std::int32_t particles) {
   const auto n = static_cast<std::size_t>(particles);
-  time_.assign(n, kInf);
-  next_.assign(n, kFirst);
-  previous_.assign(n, kUnscheduled);
+  nodes_.assign(n, Node{kInf, kFirst, kUnscheduled});
   heads_.assign(std::bit_ceil(std::max<std::size_t>(16, n / 2)), kFirst);
   current_.clear();
   current_.reserve(4 * kMinimumCrowd);
@@ -43,7 +42,7 @@ void EventQueue::reset(std::int32_t particles) {
 
 void EventQueue::update(std::int32_t particle, double time) {
   remove(particle);
-  time_[static_cast<std::size_t>(particle)] = time;
+  nodes_[static_cast<std::size_t>(particle)].time = time;
   insert(particle);
   // A width too large for the present event rate (the first one is a guess): fit it again, unless
   // the bucket is full of one time, which no width can split (then not before it doubles).
@@ -51,9 +50,9 @@ void EventQueue::update(std::int32_t particle, double time) {
 }
 
 void EventQueue::insert(std::int32_t particle) const {
-  const double time = time_[static_cast<std::size_t>(particle)];
+  const double time = nodes_[static_cast<std::size_t>(particle)].time;
   if (time == kInf) {
-    previous_[static_cast<std::size_t>(particle)] = kUnscheduled;
+    nodes_[static_cast<std::size_t>(particle)].previous = kUnscheduled;
     return;
   }
   const std::int64_t bucket = bucket_of(time);
@@ -73,42 +72,42 @@ void EventQueue::insert(std::int32_t particle) const {
 
 void EventQueue::remove(std::int32_t particle) const {
   const auto i = static_cast<std::size_t>(particle);
-  if (previous_[i] == kUnscheduled) return;
-  if (previous_[i] == kCurrent) {
-    erase_current(static_cast<std::size_t>(next_[i]));
+  if (nodes_[i].previous == kUnscheduled) return;
+  if (nodes_[i].previous == kCurrent) {
+    erase_current(static_cast<std::size_t>(nodes_[i].next));
   } else {
-    unlink(particle, slot_of(bucket_of(time_[i])));
+    unlink(particle, slot_of(bucket_of(nodes_[i].time)));
   }
-  previous_[i] = kUnscheduled;
+  nodes_[i].previous = kUnscheduled;
 }
 
 void EventQueue::link(std::int32_t particle, std::size_t slot) const {
   const auto i = static_cast<std::size_t>(particle);
   const std::int32_t head = heads_[slot];
-  next_[i] = head;
-  previous_[i] = kFirst;
-  if (head != kFirst) previous_[static_cast<std::size_t>(head)] = particle;
+  nodes_[i].next = head;
+  nodes_[i].previous = kFirst;
+  if (head != kFirst) nodes_[static_cast<std::size_t>(head)].previous = particle;
   heads_[slot] = particle;
   ++listed_;
 }
 
 void EventQueue::unlink(std::int32_t particle, std::size_t slot) const {
   const auto i = static_cast<std::size_t>(particle);
-  const std::int32_t before = previous_[i];
-  const std::int32_t after = next_[i];
+  const std::int32_t before = nodes_[i].previous;
+  const std::int32_t after = nodes_[i].next;
   if (before == kFirst) {
     heads_[slot] = after;
   } else {
-    next_[static_cast<std::size_t>(before)] = after;
+    nodes_[static_cast<std::size_t>(before)].next = after;
   }
-  if (after != kFirst) previous_[static_cast<std::size_t>(after)] = before;
+  if (after != kFirst) nodes_[static_cast<std::size_t>(after)].previous = before;
   --listed_;
 }
 
 void EventQueue::push_current(std::int32_t particle) const {
-  previous_[static_cast<std::size_t>(particle)] = kCurrent;
+  nodes_[static_cast<std::size_t>(particle)].previous = kCurrent;
   current_.push_back(particle);
-  next_[static_cast<std::size_t>(particle)] = static_cast<std::int32_t>(current_.size() - 1);
+  nodes_[static_cast<std::size_t>(particle)].next = static_cast<std::int32_t>(current_.size() - 1);
   sift_up(current_.size() - 1);
 }
 
@@ -118,7 +117,7 @@ void EventQueue::erase_current(std::size_t position) const {
   if (position == current_.size()) return;
   place(position, last);
   sift_up(position);
-  sift_down(static_cast<std::size_t>(next_[static_cast<std::size_t>(last)]));
+  sift_down(static_cast<std::size_t>(nodes_[static_cast<std::size_t>(last)].next));
 }
 
 void EventQueue::sift_up(std::size_t position) const {
@@ -154,8 +153,8 @@ void EventQueue::settle() const {
       // A whole turn of the calendar without an event: jump to the earliest bucket there is.
       std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
       for (const std::int32_t head : heads_) {
-        for (std::int32_t p = head; p != kFirst; p = next_[static_cast<std::size_t>(p)]) {
-          earliest = std::min(earliest, bucket_of(time_[static_cast<std::size_t>(p)]));
+        for (std::int32_t p = head; p != kFirst; p = nodes_[static_cast<std::size_t>(p)].next) {
+          earliest = std::min(earliest, bucket_of(nodes_[static_cast<std::size_t>(p)].time));
         }
       }
       bucket_ = earliest - 1;
@@ -163,8 +162,8 @@ void EventQueue::settle() const {
     ++bucket_;
     const std::size_t slot = slot_of(bucket_);
     for (std::int32_t p = heads_[slot]; p != kFirst;) {
-      const std::int32_t after = next_[static_cast<std::size_t>(p)];
-      if (bucket_of(time_[static_cast<std::size_t>(p)]) == bucket_) {
+      const std::int32_t after = nodes_[static_cast<std::size_t>(p)].next;
+      if (bucket_of(nodes_[static_cast<std::size_t>(p)].time) == bucket_) {
         unlink(p, slot);
         push_current(p);
       }
@@ -177,12 +176,12 @@ void EventQueue::rebuild() const {
   // The width: kEventsPerBucket events per bucket at the present density of times ahead, the
   // number of finite events over their mean distance from the earliest.
   double earliest = kInf;
-  for (const double t : time_) earliest = std::min(earliest, t);
+  for (const Node& node : nodes_) earliest = std::min(earliest, node.time);
   double spread = 0.0;
   std::size_t finite = 0;
-  for (const double t : time_) {
-    if (t == kInf) continue;
-    spread += t - earliest;
+  for (const Node& node : nodes_) {
+    if (node.time == kInf) continue;
+    spread += node.time - earliest;
     ++finite;
   }
   const double mean = finite > 0 ? spread / static_cast<double>(finite) : 0.0;
@@ -192,7 +191,7 @@ void EventQueue::rebuild() const {
   current_.clear();
   listed_ = 0;
   bucket_ = std::isfinite(earliest) ? bucket_of(earliest) : 0;
-  for (std::size_t i = 0; i < time_.size(); ++i) insert(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < nodes_.size(); ++i) insert(static_cast<std::int32_t>(i));
   crowded_ = std::max(kMinimumCrowd, 2 * current_.size());
 }
 
@@ -200,31 +199,35 @@ bool EventQueue::is_consistent() const {
   std::int64_t listed = 0;
   for (std::size_t slot = 0; slot < heads_.size(); ++slot) {
     std::int32_t before = kFirst;
-    for (std::int32_t p = heads_[slot]; p != kFirst; p = next_[static_cast<std::size_t>(p)]) {
+    for (std::int32_t p = heads_[slot]; p != kFirst; p = nodes_[static_cast<std::size_t>(p)].next) {
       const auto i = static_cast<std::size_t>(p);
-      if (i >= time_.size() || previous_[i] != before || slot_of(bucket_of(time_[i])) != slot || !(bucket_of(time_[i]) > bucket_)) return false;
-      if (++listed > static_cast<std::int64_t>(time_.size())) return false;
+      if (i >= nodes_.size() || nodes_[i].previous != before || slot_of(bucket_of(nodes_[i].time)) != slot || !(bucket_of(nodes_[i].time) > bucket_)) return false;
+      if (++listed > static_cast<std::int64_t>(nodes_.size())) return false;
       before = p;
     }
   }
   if (listed != listed_) return false;
   for (std::size_t k = 0; k < current_.size(); ++k) {
     const auto i = static_cast<std::size_t>(current_[k]);
-    if (i >= time_.size() || previous_[i] != kCurrent || next_[i] != static_cast<std::int32_t>(k) || bucket_of(time_[i]) != bucket_) return false;
+    if (i >= nodes_.size() || nodes_[i].previous != kCurrent || nodes_[i].next != static_cast<std::int32_t>(k) || bucket_of(nodes_[i].time) != bucket_) return false;
     if (k > 0 && earlier(current_[k], current_[(k - 1) / 2])) return false;
   }
-  for (std::size_t i = 0; i < time_.size(); ++i) {
-    if ((time_[i] == kInf) != (previous_[i] == kUnscheduled)) return false;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if ((nodes_[i].time == kInf) != (nodes_[i].previous == kUnscheduled)) return false;
   }
   return true;
 }
 
 void EventQueue::shift_times(double delta) {
-  for (double& t : time_) t -= delta;
+  for (Node& node : nodes_) node.time -= delta;
   rebuild();
 }
 
-void EventQueue::save(StateArchive& archive, const std::string& prefix) const { archive.put_view(prefix + "time", time_); }
+void EventQueue::save(StateArchive& archive, const std::string& prefix) const {
+  archive.put_generated<double>(prefix + "time", nodes_.size(), [this](std::size_t first, std::span<double> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = nodes_[first + k].time;
+  });
+}
 
 void EventQueue::restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles) {
   const auto& times = archive.get<double>(prefix + "time");
@@ -233,7 +236,7 @@ void EventQueue::restore(const StateArchive& archive, const std::string& prefix,
     throw std::runtime_error("checkpoint event queue has a time that is not a number");
   }
   reset(particles);
-  time_.assign(times.begin(), times.end());
+  for (std::size_t i = 0; i < times.size(); ++i) nodes_[i].time = times[i];
   rebuild();
 }
 

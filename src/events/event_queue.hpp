@@ -31,8 +31,8 @@ class EventQueue {
     settle();
     return current_.empty() ? 0 : current_.front();
   }
-  double top_time() const { return time_[static_cast<std::size_t>(top())]; }
-  double time_of(std::int32_t particle) const { return time_[static_cast<std::size_t>(particle)]; }
+  double top_time() const { return nodes_[static_cast<std::size_t>(top())].time; }
+  double time_of(std::int32_t particle) const { return nodes_[static_cast<std::size_t>(particle)].time; }
   // Every particle is where its time says and the current bucket is in heap order (the
   // GRANULE_PARANOID build checks it at every re-base).
   bool is_consistent() const;
@@ -41,11 +41,18 @@ class EventQueue {
   void save(StateArchive& archive, const std::string& prefix) const;
   void restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles);
   std::size_t bytes() const {
-    return time_.capacity() * sizeof(double) + (next_.capacity() + previous_.capacity() + heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
+    return nodes_.capacity() * sizeof(Node) + (heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
   }
 
  private:
-  // previous_ of a particle not in a bucket list: +inf time, or in the current bucket's heap.
+  // A particle's event time and its links, in one 16-byte node: an update, and the walk of a
+  // bucket list, touch one cache line per particle where three arrays cost three.
+  struct Node {
+    double time;
+    std::int32_t next;      // next in its bucket list, or its position in current_
+    std::int32_t previous;  // previous in its bucket list, or a marker below
+  };
+  // `previous` of a particle not in a bucket list: +inf time, or in the current bucket's heap.
   static constexpr std::int32_t kUnscheduled = -3;
   static constexpr std::int32_t kCurrent = -2;
   static constexpr std::int32_t kFirst = -1;  // first of its bucket list
@@ -53,8 +60,8 @@ class EventQueue {
   std::int64_t bucket_of(double time) const;
   std::size_t slot_of(std::int64_t bucket) const { return static_cast<std::size_t>(bucket) & (heads_.size() - 1); }
   bool earlier(std::int32_t a, std::int32_t b) const {
-    const double ta = time_[static_cast<std::size_t>(a)];
-    const double tb = time_[static_cast<std::size_t>(b)];
+    const double ta = nodes_[static_cast<std::size_t>(a)].time;
+    const double tb = nodes_[static_cast<std::size_t>(b)].time;
     return ta < tb || (ta == tb && a < b);
   }
   void insert(std::int32_t particle) const;
@@ -67,7 +74,7 @@ class EventQueue {
   void sift_down(std::size_t position) const;
   void place(std::size_t position, std::int32_t particle) const {
     current_[position] = particle;
-    next_[static_cast<std::size_t>(particle)] = static_cast<std::int32_t>(position);
+    nodes_[static_cast<std::size_t>(particle)].next = static_cast<std::int32_t>(position);
   }
   // Make the current bucket the earliest non-empty one (the calendar moves lazily, when the top
   // is asked for, so that updates at times before a jump never meet a calendar ahead of them).
@@ -75,11 +82,9 @@ class EventQueue {
   // Re-distribute every event with a bucket width fitted to the present spread of times.
   void rebuild() const;
 
-  HugePageVector<double> time_;
   // The calendar's state changes when the top is looked up (settle), which the engine does in its
-  // const queries: it is mutable, the order it gives is not.
-  mutable HugePageVector<std::int32_t> next_;      // next in its bucket list, or its position in current_
-  mutable HugePageVector<std::int32_t> previous_;  // previous in its bucket list, or a marker above
+  // const queries: it is mutable, the order it gives is not (only the links change there).
+  mutable HugePageVector<Node> nodes_;
   mutable HugePageVector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
   mutable std::vector<std::int32_t> current_;   // the current bucket: a binary heap by (time, id)
   mutable std::int64_t bucket_ = 0;             // the current bucket
