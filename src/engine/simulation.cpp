@@ -92,19 +92,14 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
 template <int D>
 void Simulation<D>::allocate_arrays() {
   const auto n = static_cast<std::size_t>(params_.particles);
-  cell_.assign(n, 0);
-  kind_.assign(n, EventKind::kNone);
-  partner_.assign(n, -1);
-  partner_count_.assign(n, 0);
-  collision_time_.assign(n, kInf);
+  slots_.assign(n, EventSlot{});
 }
 
 template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(cell_) +
-                      bytes(last_collision_) + bytes(kind_) + bytes(partner_) + bytes(partner_count_) +
-                      bytes(collision_time_) + lists_.bytes() + queue_.bytes();
+  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(slots_) +
+                      bytes(last_collision_) + lists_.bytes() + queue_.bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
@@ -140,7 +135,7 @@ void Simulation<D>::rebase() {
   const double delta = t_now_;
   for (auto& p : particles_) p.t -= delta;
   for (auto& t : last_collision_) t -= delta;
-  for (auto& t : collision_time_) t -= delta;
+  for (auto& slot : slots_) slot.collision_time -= delta;
   queue_.shift_times(delta);
   collapse_detector_.shift_times(delta);
   actions_.shift_times(delta);
@@ -181,8 +176,8 @@ void Simulation<D>::rebuild() {
   }
   lists_.reset(grid_.cell_count());
   for (std::int32_t i = 0; i < n; ++i) {
-    cell_[at(i)] = cell_of(position_now(i));
-    lists_.insert(particles_, i, cell_[at(i)]);
+    slots_[at(i)].cell = cell_of(position_now(i));
+    lists_.insert(particles_, i, slots_[at(i)].cell);
   }
   queue_.reset(n);
   for (std::int32_t i = 0; i < n; ++i) predict(i);
@@ -275,7 +270,7 @@ void Simulation<D>::start_production(const SystemParams& production) {
 template <int D>
 void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   advance(i);
-  const std::int32_t old_cell = cell_[at(i)];
+  const std::int32_t old_cell = slots_[at(i)].cell;
   std::array<int, D> cell = cell_coordinates(old_cell);
   const int axis = crossing_axis(kind);
   const int direction = crossing_direction(kind);
@@ -298,7 +293,7 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   }
   lists_.remove(particles_, i, old_cell);
   lists_.insert(particles_, i, new_cell);
-  cell_[at(i)] = new_cell;
+  slots_[at(i)].cell = new_cell;
   predict_after_crossing(i, axis, direction);
 }
 
@@ -428,12 +423,12 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
 #ifdef GRANULE_PARANOID
     check_popped_event(i);
 #endif
-    const EventKind kind = kind_[at(i)];
-    const std::int32_t j = partner_[at(i)];
+    const EventKind kind = slots_[at(i)].kind;
+    const std::int32_t j = slots_[at(i)].partner;
     bool collided = false;
     bool hit_wall = false;
     if (kind == EventKind::kCollision) {
-      if (particles_[at(j)].count != partner_count_[at(i)]) {
+      if (particles_[at(j)].count != slots_[at(i)].partner_count) {
         predict(i);  // the partner has collided since: stale
       } else {
         collided = execute_collision(i, j);

@@ -247,8 +247,8 @@ class Simulation {
   void predict_after_crossing(std::int32_t i, int axis, int direction);
   // Whether particle i's kept candidate is still a valid collision: its partner has not collided since.
   bool candidate_valid(std::int32_t i) const {
-    const std::int32_t k = partner_[static_cast<std::size_t>(i)];
-    return k < 0 || particles_[static_cast<std::size_t>(k)].count == partner_count_[static_cast<std::size_t>(i)];
+    const std::int32_t k = slots_[static_cast<std::size_t>(i)].partner;
+    return k < 0 || particles_[static_cast<std::size_t>(k)].count == slots_[static_cast<std::size_t>(i)].partner_count;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
@@ -273,7 +273,7 @@ class Simulation {
   // The same over the offsets within `reach`.
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
-    for_each_neighbour(i, cell_coordinates(cell_[static_cast<std::size_t>(i)]), reach, visit);
+    for_each_neighbour(i, cell_coordinates(slots_[static_cast<std::size_t>(i)].cell), reach, visit);
   }
   // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
   template <typename Visit>
@@ -298,8 +298,8 @@ class Simulation {
   double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
   // Particles by plain id: the records a neighbour's collision test reads (position and velocity
-  // at local time t, cell-list link, collision counter), then arrays of what only a particle's
-  // own events read.
+  // at local time t, cell-list link, collision counter), then the slots of what only a particle's
+  // own events read, then the arrays of optional features.
   HugePageVector<ParticleRecord<D>> particles_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only
   // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
@@ -307,15 +307,8 @@ class Simulation {
   std::array<std::vector<double>, kSpinComponents> spin_;
   Vector gravity_;
   bool has_gravity_ = false;
-  HugePageVector<std::int32_t> cell_;
+  HugePageVector<EventSlot> slots_;
   std::vector<double> last_collision_;  // TC model only
-  // Pending event of each particle (its time lives in the queue).
-  HugePageVector<EventKind> kind_;
-  HugePageVector<std::int32_t> partner_;
-  HugePageVector<std::uint32_t> partner_count_;
-  // The time of the collision candidate (partner_), pending or not (+inf: none): kept through
-  // crossings, and through changes of U where the pair meets inside the box.
-  HugePageVector<double> collision_time_;
 
   CellLists lists_;
   EventQueue queue_;

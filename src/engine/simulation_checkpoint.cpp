@@ -107,6 +107,26 @@ void visit_record_fields(Visit&& visit) {
   visit("cell_list_next", [](auto& p) -> auto& { return p.next; });
 }
 
+// The same for the event slots (the event kind, a byte on file, is saved and checked apart).
+template <typename Visit>
+void visit_slot_fields(Visit&& visit) {
+  visit("cell", [](auto& s) -> auto& { return s.cell; });
+  visit("event_partner", [](auto& s) -> auto& { return s.partner; });
+  visit("event_partner_count", [](auto& s) -> auto& { return s.partner_count; });
+  visit("collision_time", [](auto& s) -> auto& { return s.collision_time; });
+}
+
+// Each field of `items` as one array of the archive.
+template <typename Items, typename Fields>
+void put_fields(StateArchive& archive, const std::string& prefix, const Items& items, Fields&& visit_fields) {
+  visit_fields([&](const char* name, auto field) {
+    using Value = std::decay_t<decltype(field(items[0]))>;
+    archive.put_generated<Value>(prefix + name, items.size(), [&items, field](std::size_t first, std::span<Value> out) {
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] = field(items[first + k]);
+    });
+  });
+}
+
 bool optional_array(std::string_view name) {
   return name == "particle_diameter" || name == "particle_mass" || name.substr(0, 5) == "spin_";
 }
@@ -130,11 +150,7 @@ void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
     visit("spin_y", self.spin_[1]);
   }
   visit("spin_z", self.spin_[kSpinComponents - 1]);
-  visit("cell", self.cell_);
   visit("last_collision", self.last_collision_);
-  visit("event_partner", self.partner_);
-  visit("event_partner_count", self.partner_count_);
-  visit("collision_time", self.collision_time_);
   visit("t_now", self.t_now_);
   visit("clock_base", self.clock_base_);
   visit("t_ref", self.t_ref_);
@@ -181,14 +197,10 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
       archive.put_view(prefix + name, value);
     }
   });
-  visit_record_fields<D>([&](const char* name, auto field) {
-    using Value = std::decay_t<decltype(field(particles_[0]))>;
-    archive.put_generated<Value>(prefix + name, particles_.size(), [this, field](std::size_t first, std::span<Value> out) {
-      for (std::size_t k = 0; k < out.size(); ++k) out[k] = field(particles_[first + k]);
-    });
-  });
-  archive.put_generated<std::uint8_t>(prefix + "event_kind", kind_.size(), [this](std::size_t first, std::span<std::uint8_t> out) {
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(kind_[first + k]);
+  put_fields(archive, prefix, particles_, [](auto&& visit) { visit_record_fields<D>(visit); });
+  put_fields(archive, prefix, slots_, [](auto&& visit) { visit_slot_fields(visit); });
+  archive.put_generated<std::uint8_t>(prefix + "event_kind", slots_.size(), [this](std::size_t first, std::span<std::uint8_t> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(slots_[first + k].kind);
   });
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
@@ -212,10 +224,15 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
   const auto n = static_cast<std::size_t>(params.particles);
   particles_.assign(n, ParticleRecord<D>{});
-  visit_record_fields<D>([&](const char* name, auto field) {
-    const auto values = array_of_size<std::decay_t<decltype(field(particles_[0]))>>(archive, prefix + name, n);
-    for (std::size_t i = 0; i < n; ++i) field(particles_[i]) = values[i];
-  });
+  slots_.assign(n, EventSlot{});
+  const auto get_fields = [&](auto& items, auto&& visit_fields) {
+    visit_fields([&](const char* name, auto field) {
+      const auto values = array_of_size<std::decay_t<decltype(field(items[0]))>>(archive, prefix + name, n);
+      for (std::size_t i = 0; i < n; ++i) field(items[i]) = values[i];
+    });
+  };
+  get_fields(particles_, [](auto&& visit) { visit_record_fields<D>(visit); });
+  get_fields(slots_, [](auto&& visit) { visit_slot_fields(visit); });
   visit_saved_state(*this, [&](const char* name, auto& value) {
     using Value = std::decay_t<decltype(value)>;
     if constexpr (std::is_same_v<Value, double>) {
@@ -239,15 +256,14 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
   schedule_realignment();
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
-  kind_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!valid_event_kind(kinds[i], D)) throw std::runtime_error("checkpoint has an unknown event kind");
-    kind_[i] = static_cast<EventKind>(kinds[i]);
+    slots_[i].kind = static_cast<EventKind>(kinds[i]);
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const bool collision = kind_[i] == EventKind::kCollision;
-    if (cell_[i] < 0 || cell_[i] >= grid.cell_count() || partner_[i] < -1 || partner_[i] >= params.particles ||
-        (collision && partner_[i] < 0)) {
+    const bool collision = slots_[i].kind == EventKind::kCollision;
+    if (slots_[i].cell < 0 || slots_[i].cell >= grid.cell_count() || slots_[i].partner < -1 || slots_[i].partner >= params.particles ||
+        (collision && slots_[i].partner < 0)) {
       throw std::runtime_error("checkpoint has a disk with an invalid cell or event partner");
     }
   }

@@ -106,7 +106,7 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
                                                                 Candidate known) const {
   const Vector ri = position_now(i);
   const Vector vi = velocity_now(i);
-  const std::array<int, D> cell = cell_coordinates(cell_[at(i)]);
+  const std::array<int, D> cell = cell_coordinates(slots_[at(i)].cell);
   const Crossing crossing = next_crossing(i, cell, ri, vi);
 
   // Collisions with the particles of the cells within reach.  Under a uniform gravity the relative
@@ -146,10 +146,10 @@ void Simulation<D>::predict(std::int32_t i) {
 
 template <int D>
 void Simulation<D>::store(std::int32_t i, const Prediction& next) {
-  kind_[at(i)] = next.kind();
-  partner_[at(i)] = next.partner;
-  partner_count_[at(i)] = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
-  collision_time_[at(i)] = t_now_ + next.collision_delay;
+  slots_[at(i)].kind = next.kind();
+  slots_[at(i)].partner = next.partner;
+  slots_[at(i)].partner_count = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
+  slots_[at(i)].collision_time = t_now_ + next.collision_delay;
   queue_.update(i, t_now_ + next.delay());
 }
 
@@ -167,7 +167,7 @@ void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int directi
     predict(i);
     return;
   }
-  const Candidate kept{partner_[at(i)], collision_time_[at(i)] - t_now_};
+  const Candidate kept{slots_[at(i)].partner, slots_[at(i)].collision_time - t_now_};
   store(i, next_event(i, Reach::layer_ahead(axis, direction), kept));
 }
 
