@@ -3,7 +3,7 @@
 // then touches one record, 48 bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read
 // six separate arrays before (issue 18; docs/performance.md).  The rest of a particle's data
 // (its pending event, cell, candidate time) is read only when its own event runs and stays in
-// arrays beside the records.
+// its EventSlot, below.
 #pragma once
 
 #include <cstdint>
