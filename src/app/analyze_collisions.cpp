@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "app/exit_codes.hpp"
 #include "app/analyze_command.hpp"
 #include "driver/stop_loop.hpp"
 #include "driver/run_measurements.hpp"
@@ -19,8 +20,6 @@
 namespace granule::app {
 
 namespace {
-
-constexpr int kExitBadInput = 2;
 
 struct CollisionsOptions {
   std::string run_dir;

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "app/analyze_command.hpp"
+#include "app/exit_codes.hpp"
 #include "distribution/window_sampling.hpp"
 #include "io/io_error.hpp"
 
@@ -21,7 +22,6 @@ namespace {
 
 using namespace granule::distribution;
 
-constexpr int kExitBadInput = 2;
 constexpr int kExitNoWindow = 1;
 
 struct F1CommandOptions {

@@ -231,7 +231,7 @@ void write_hdf5(const std::string& path, const F1RunDescription& run, const std:
   partial.publish();
 }
 
-std::string g(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.10g}", value); }
+std::string csv_number(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.10g}", value); }
 
 }  // namespace
 
@@ -260,7 +260,7 @@ std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDes
     for (int j = 0; j <= SineSeries::kHarmonics; ++j) {
       table += fmt::format("{},{},{},{},{},{}", e, rho.center, rho.half_width, t.center, t.half_width, j);
       for (const std::vector<double>* values : {&c.table, &c.table_error})
-        for (int q = 0; q < 4; ++q) table += fmt::format(",{}", g((*values)[4 * j + q]));
+        for (int q = 0; q < 4; ++q) table += fmt::format(",{}", csv_number((*values)[4 * j + q]));
       table += "\n";
     }
     const F1Estimate& est = r.estimate;
@@ -268,34 +268,34 @@ std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDes
     const JenkinsRichman& jr = r.jenkins_richman;
     summary += fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", w,
-        rho.center, rho.half_width, t.center, t.half_width, r.samples, r.snapshots, g(r.density), g(r.temperature),
-        g(r.cell_temperature), g(b.mean[0]), g(r.speed_scale * b.mean[1]), g(r.speed_scale * r.speed_scale * b.mean[2]),
-        g(est.ratio), g(r.errors.ratio), g(est.direct.trace()), g(r.errors.direct_trace),
-        g(est.once_integrals.moment.trace()), g(r.errors.once_trace), g(est.twice_integrals.moment.trace()),
-        g(r.errors.twice_trace), g(est.once_integrals.normalisation), g(est.twice_integrals.normalisation),
-        g(r.quality.max_deviation_small_speed), g(r.quality.max_deviation_large_speed),
+        rho.center, rho.half_width, t.center, t.half_width, r.samples, r.snapshots, csv_number(r.density), csv_number(r.temperature),
+        csv_number(r.cell_temperature), csv_number(b.mean[0]), csv_number(r.speed_scale * b.mean[1]), csv_number(r.speed_scale * r.speed_scale * b.mean[2]),
+        csv_number(est.ratio), csv_number(r.errors.ratio), csv_number(est.direct.trace()), csv_number(r.errors.direct_trace),
+        csv_number(est.once_integrals.moment.trace()), csv_number(r.errors.once_trace), csv_number(est.twice_integrals.moment.trace()),
+        csv_number(r.errors.twice_trace), csv_number(est.once_integrals.normalisation), csv_number(est.twice_integrals.normalisation),
+        csv_number(r.quality.max_deviation_small_speed), csv_number(r.quality.max_deviation_large_speed),
         r.quality.within_tolerance() ? 1 : 0, est.once.speed.report.converged ? 1 : 0,
-        g(est.once.speed.report.residual_rms), est.once.angular.report.converged ? 1 : 0,
-        g(est.once.angular.report.residual_rms), b.report.converged ? 1 : 0, g(b.report.residual_rms),
-        g(est.angular.max_relative_deviation), r.errors.converged_replicates, r.errors.replicates, g(jr.b0),
-        g(jr.b2_mean), g(jr.b2_amplitude), g(jr.phase));
+        csv_number(est.once.speed.report.residual_rms), est.once.angular.report.converged ? 1 : 0,
+        csv_number(est.once.angular.report.residual_rms), b.report.converged ? 1 : 0, csv_number(b.report.residual_rms),
+        csv_number(est.angular.max_relative_deviation), r.errors.converged_replicates, r.errors.replicates, csv_number(jr.b0),
+        csv_number(jr.b2_mean), csv_number(jr.b2_amplitude), csv_number(jr.phase));
     const std::size_t nv = c.speed_edges.size(), nt = c.theta.size();
     for (std::size_t k = 0; k < nv; ++k) {
-      speed += fmt::format("{},{},{},{},{},{}\n", w, g(c.speed_edges[k]), g(c.phi[k]), g(c.phi_fit[k]), g(c.j[k]), g(c.j_fit[k]));
+      speed += fmt::format("{},{},{},{},{},{}\n", w, csv_number(c.speed_edges[k]), csv_number(c.phi[k]), csv_number(c.phi_fit[k]), csv_number(c.j[k]), csv_number(c.j_fit[k]));
       for (std::size_t l = 0; l < nt; ++l)
-        cumulative += fmt::format("{},{},{},{},{},{},{}\n", w, g(c.speed_edges[k]), g(c.angle_edges[l]),
-                                  g(c.h[k * (nt + 1) + l]), g(c.h_fit[k * (nt + 1) + l]), g(c.psi[k * nt + l]),
-                                  g(c.psi_fit[k * nt + l]));
+        cumulative += fmt::format("{},{},{},{},{},{},{}\n", w, csv_number(c.speed_edges[k]), csv_number(c.angle_edges[l]),
+                                  csv_number(c.h[k * (nt + 1) + l]), csv_number(c.h_fit[k * (nt + 1) + l]), csv_number(c.psi[k * nt + l]),
+                                  csv_number(c.psi_fit[k * nt + l]));
     }
     for (std::size_t l = 0; l < nt; ++l)
-      angular += fmt::format("{},{},{},{},{},{},{},{},{}\n", w, g(c.theta[l]), g(c.b[3 * l]), g(c.b[3 * l + 1]),
-                             g(c.b[3 * l + 2]), g(c.b_series[3 * l]), g(c.b_series[3 * l + 1]),
-                             g(c.b_series[3 * l + 2]), g(c.rms[l]));
+      angular += fmt::format("{},{},{},{},{},{},{},{},{}\n", w, csv_number(c.theta[l]), csv_number(c.b[3 * l]), csv_number(c.b[3 * l + 1]),
+                             csv_number(c.b[3 * l + 2]), csv_number(c.b_series[3 * l]), csv_number(c.b_series[3 * l + 1]),
+                             csv_number(c.b_series[3 * l + 2]), csv_number(c.rms[l]));
     for (std::size_t k = 0; k < c.profile_speed.size(); ++k) {
-      profiles += fmt::format("{},speed,{},{},{},{},{}\n", w, g(c.profile_speed[k]), g(c.at_angle), g(c.f_speed_once[k]),
-                              g(c.f_speed_twice[k]), g(c.f_speed_jr[k]));
-      profiles += fmt::format("{},angle,{},{},{},{},{}\n", w, g(c.at_speed), g(c.profile_angle[k]), g(c.f_angle_once[k]),
-                              g(c.f_angle_twice[k]), g(c.f_angle_jr[k]));
+      profiles += fmt::format("{},speed,{},{},{},{},{}\n", w, csv_number(c.profile_speed[k]), csv_number(c.at_angle), csv_number(c.f_speed_once[k]),
+                              csv_number(c.f_speed_twice[k]), csv_number(c.f_speed_jr[k]));
+      profiles += fmt::format("{},angle,{},{},{},{},{}\n", w, csv_number(c.at_speed), csv_number(c.profile_angle[k]), csv_number(c.f_angle_once[k]),
+                              csv_number(c.f_angle_twice[k]), csv_number(c.f_angle_jr[k]));
     }
   }
   const std::filesystem::path parent = std::filesystem::path(out).parent_path();

@@ -17,7 +17,7 @@ constexpr double kSameRelative = 1e-6;
 
 bool same_restitution(double a, double b) { return std::abs(a - b) < 1e-9; }
 
-std::string g(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.6g}", value); }
+std::string table_number(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.6g}", value); }
 
 }  // namespace
 
@@ -67,11 +67,11 @@ std::string thesis_comparison_csv(const SystemParams& run, const std::vector<Win
     const SineSeries &b = r.estimate.series, &error = r.errors.series;
     const double s = r.speed_scale, s_thesis = std::sqrt(2.0 * e.temperature);
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", w,
-                       g(r.density_window.center), g(r.temperature_window.center), g(e.density), g(e.temperature),
-                       match->same_window ? 1 : 0, g(e.b0), g(e.b1), g(e.b2), g(b.mean[0]), g(error.mean[0]),
-                       g(b.mean[1]), g(error.mean[1]), g(b.mean[2]), g(error.mean[2]), g(b.mean[1] / e.b1),
-                       g((b.mean[1] - e.b1) / error.mean[1]), g(s_thesis * e.b1), g(s * b.mean[1]),
-                       g(s_thesis * s_thesis * e.b2), g(s * s * b.mean[2]), g(map.length), g(map.velocity));
+                       table_number(r.density_window.center), table_number(r.temperature_window.center), table_number(e.density), table_number(e.temperature),
+                       match->same_window ? 1 : 0, table_number(e.b0), table_number(e.b1), table_number(e.b2), table_number(b.mean[0]), table_number(error.mean[0]),
+                       table_number(b.mean[1]), table_number(error.mean[1]), table_number(b.mean[2]), table_number(error.mean[2]), table_number(b.mean[1] / e.b1),
+                       table_number((b.mean[1] - e.b1) / error.mean[1]), table_number(s_thesis * e.b1), table_number(s * b.mean[1]),
+                       table_number(s_thesis * s_thesis * e.b2), table_number(s * s * b.mean[2]), table_number(map.length), table_number(map.velocity));
   }
   if (csv.empty()) return csv;
   return "window,rho_center,T_center,thesis_rho_center,thesis_T_center,same_window,thesis_b0_0,thesis_b1_0,"

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "analysis/cell_fields.hpp"
+#include "app/exit_codes.hpp"
 #include "app/analyze_command.hpp"
 #include "granule/version.hpp"
 #include "io/fields_file.hpp"
@@ -20,8 +21,6 @@
 namespace granule::app {
 
 namespace {
-
-constexpr int kExitBadInput = 2;
 
 struct FieldsOptions {
   std::string snapshots;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "app/exit_codes.hpp"
 #include "app/analyze_command.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
@@ -36,7 +37,6 @@ namespace {
 
 using namespace granule::spectra;
 
-constexpr int kExitBadInput = 2;
 constexpr int kMaxModeLimit = 2048;
 constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
 constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
