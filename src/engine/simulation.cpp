@@ -46,19 +46,12 @@ Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
 }
 
 template <int D>
-std::array<int, D> Simulation<D>::cell_coordinates(std::int32_t cell) const {
-  if constexpr (D == 2) {
-    return {grid_.column_of(cell), cell / grid_.nx};  // one division fewer than row_of's
-  } else {
-    return {grid_.column_of(cell), grid_.row_of(cell), grid_.layer_of(cell)};
-  }
-}
-
-template <int D>
 Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
                           const ClockState& clock)
     : params_(params),
       grid_(grid),
+      by_columns_(static_cast<std::uint32_t>(grid.nx)),
+      by_rows_(static_cast<std::uint32_t>(grid.ny)),
       frame_{params.length_x, params.length_y, 0.0},
       protocol_(params.shear_velocity, params.shear_history) {
   for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];

@@ -20,6 +20,7 @@
 #include "boundary/shear_frame.hpp"
 #include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
+#include "cells/exact_divisor.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
@@ -167,7 +168,17 @@ class Simulation {
   bool meets_through_y_image(std::int32_t i) const;
   std::int32_t cell_of(const Vector& position) const;
   // The cell coordinates (column, row, layer) of a cell id.
-  std::array<int, D> cell_coordinates(std::int32_t cell) const;
+  std::array<int, D> cell_coordinates(std::int32_t cell) const {
+    const auto id = static_cast<std::uint32_t>(cell);
+    const std::uint32_t rows = by_columns_.quotient(id);  // rows of all layers before the cell's
+    const auto column = static_cast<int>(id - rows * by_columns_.divisor());
+    if constexpr (D == 2) {
+      return {column, static_cast<int>(rows)};
+    } else {
+      const std::uint32_t layer = by_rows_.quotient(rows);
+      return {column, static_cast<int>(rows - layer * by_rows_.divisor()), static_cast<int>(layer)};
+    }
+  }
   Vector position_now(std::int32_t i) const;
   // Position and velocity of particle i `dt` after its local time (parabolic under gravity).
   Vector position_after(std::int32_t i, double dt) const;
@@ -278,6 +289,17 @@ class Simulation {
   // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach, Visit&& visit) const;
+  // The cells within reach of a cell, in visiting order: the head of each one's list and, when the
+  // block is `imaged` (some of it lies across a face of the grid), the image each is seen at.
+  static constexpr int kStencil = D == 3 ? 27 : 9;
+  struct BlockCells {
+    std::array<std::int32_t, kStencil> head;
+    std::array<Vector, kStencil> shift;
+    std::array<double, kStencil> shift_vx;
+    int count = 0;
+    bool imaged = false;  // otherwise every shift is zero and not written
+  };
+  void block_cells(const std::array<int, D>& cell, const Reach& reach, BlockCells& block) const;
   // Whether a cell is away from every face of the grid: its block then sees no image.
   bool is_interior(const std::array<int, D>& cell) const;
   // The image of a partner at lab offset `offset` from a particle in contact with it.
@@ -291,6 +313,7 @@ class Simulation {
 
   SystemParams params_;
   CellGrid grid_;
+  ExactDivisor by_columns_, by_rows_;  // by grid_.nx and grid_.ny (cell_coordinates)
   ShearFrame frame_;  // its shear_velocity is the current U
   double shear_rate_ = 0.0;
   ShearProtocol protocol_;

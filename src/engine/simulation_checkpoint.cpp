@@ -214,6 +214,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
                           const std::string& prefix)
     : params_(params),
       grid_(grid),
+      by_columns_(static_cast<std::uint32_t>(grid.nx)),
+      by_rows_(static_cast<std::uint32_t>(grid.ny)),
       frame_{params.length_x, params.length_y, 0.0},
       protocol_(params.shear_velocity, params.shear_history) {
   check_matches(archive, prefix, params, grid, D);

@@ -26,48 +26,34 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 }
 
 template <int D>
-template <typename Visit>
-void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach,
-                                       Visit&& visit) const {
+inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Reach& reach, BlockCells& block) const {
   const double s = strain();
-  // The cells within reach with their images, in visiting order: layers (z, 3D only) outermost,
-  // then rows (y), then columns (x).  The order decides which of two partners at equal times is
-  // taken, so it is the 2D engine's order.
-  struct CellVisit {
-    std::int32_t first;  // head of its list
-    Vector shift;        // position of the image its particles are seen at
-    double shift_vx;     // and the velocity of that image along x
+  // Visiting order: layers (z, 3D only) outermost, then rows (y), then columns (x).  The order
+  // decides which of two partners at equal times is taken, so it is the 2D engine's order.
+  // The head of every cell is read, and its first record prefetched, before any list is followed:
+  // the lists are chains through the records, and read one after the other their cache misses
+  // would not overlap (without a branch, which an empty cell would mispredict).
+  const auto visit = [&](std::int32_t cell_index) {
+    const std::int32_t head = lists_.first(cell_index);
+    __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
+    block.head[static_cast<std::size_t>(block.count++)] = head;
   };
-  const auto walk = [&](std::int32_t first, const Vector& shift, double shift_vx) {
-    for (std::int32_t j = first; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
-      if (j != i) visit(j, shift, shift_vx);
-    }
-  };
-  constexpr int kStencil = D == 3 ? 27 : 9;
   const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
   const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
+  block.count = 0;
   // A cell away from every face of the grid (nine in ten at N = 10⁵) sees no image: its block is
   // a fixed pattern of indices around its own, and every shift is zero.
-  if (is_interior(cell)) {
-    std::array<std::int32_t, kStencil> heads;
-    int listed = 0;
+  block.imaged = !is_interior(cell);
+  if (!block.imaged) {
     const std::int32_t own = grid_.index(cell[0], cell[1], D == 3 ? cell[D - 1] : 0);
     for (int dl = lowest_layer; dl <= highest_layer; ++dl) {
       for (int dr = reach.lowest[1]; dr <= reach.highest[1]; ++dr) {
         const std::int32_t row = own + (dl * grid_.ny + dr) * grid_.nx;
-        for (int dc = reach.lowest[0]; dc <= reach.highest[0]; ++dc) {
-          const std::int32_t head = lists_.first(row + dc);
-          __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
-          heads[static_cast<std::size_t>(listed++)] = head;
-        }
+        for (int dc = reach.lowest[0]; dc <= reach.highest[0]; ++dc) visit(row + dc);
       }
     }
-    const Vector no_shift{};
-    for (int k = 0; k < listed; ++k) walk(heads[static_cast<std::size_t>(k)], no_shift, 0.0);
     return;
   }
-  std::array<CellVisit, kStencil> cells;
-  int visits = 0;
   for (int dl = lowest_layer; dl <= highest_layer; ++dl) {
     int layer = 0;
     double shift_z = 0.0;
@@ -104,18 +90,28 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>&
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];
         }
-        // The head of every cell is read, and its first record prefetched, before any list is
-        // followed: the lists are chains through the records, and read one after the other their
-        // cache misses would not overlap (without a branch, which an empty cell would mispredict).
-        const std::int32_t head = lists_.first(grid_.index(c, r, layer));
-        __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
-        cells[visits++] = {head, shift, row_shift.velocity_x};
+        block.shift[static_cast<std::size_t>(block.count)] = shift;
+        block.shift_vx[static_cast<std::size_t>(block.count)] = row_shift.velocity_x;
+        visit(grid_.index(c, r, layer));
       }
     }
   }
-  for (int k = 0; k < visits; ++k) {
-    const CellVisit& v = cells[static_cast<std::size_t>(k)];
-    walk(v.first, v.shift, v.shift_vx);
+}
+
+template <int D>
+template <typename Visit>
+void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach,
+                                       Visit&& visit) const {
+  BlockCells block;
+  block_cells(cell, reach, block);
+  const Vector no_shift{};
+  for (int k = 0; k < block.count; ++k) {
+    const auto at = static_cast<std::size_t>(k);
+    const Vector& shift = block.imaged ? block.shift[at] : no_shift;
+    const double shift_vx = block.imaged ? block.shift_vx[at] : 0.0;
+    for (std::int32_t j = block.head[at]; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
+      if (j != i) visit(j, shift, shift_vx);
+    }
   }
 }
 

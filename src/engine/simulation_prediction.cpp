@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "engine/simulation.hpp"
+#include "physics/collision_batch.hpp"
 #include "physics/collision_time.hpp"
 #include "physics/crossing_time.hpp"
 
@@ -109,33 +110,54 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   const std::array<int, D> cell = cell_coordinates(slots_[at(i)].cell);
   const Crossing crossing = next_crossing(i, cell, ri, vi);
 
-  // Collisions with the particles of the cells within reach.  Under a uniform gravity the relative
-  // motion of two grains is still a straight line: only their present states need it.
+  // Collisions with the particles of the cells within reach, tested in batches (CollisionBatch).
+  // Under a uniform gravity the relative motion of two grains is still a straight line: only
+  // their present states need it.
   std::int32_t partner = known.partner;
   double best = known.delay;
   const bool polydisperse = !diameter_.empty();
   const double sigma = params_.diameter;
-  for_each_neighbour(i, cell, reach, [&](std::int32_t j, const Vector& shift, double shift_vx) {
-    const ParticleRecord<D>& pj = particles_[at(j)];
-    const double dt_j = t_now_ - pj.t;
-    Vector rel_position;
-    Vector rel_velocity;
-    for (int a = 0; a < D; ++a) {
-      double vj = pj.v[a];
-      if constexpr (kGravity) {
-        rel_position[a] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
-        vj += gravity_[a] * dt_j;
-      } else {
-        rel_position[a] = pj.r[a] + vj * dt_j + shift[a] - ri[a];
+  BlockCells block;
+  block_cells(cell, reach, block);
+  // The first particle of each non-empty list, in visiting order, compacted without a branch (about
+  // half the cells are empty, at random).
+  std::array<std::int32_t, kStencil> first;
+  std::array<std::uint8_t, kStencil> first_cell;
+  int lists = 0;
+  for (int k = 0; k < block.count; ++k) {
+    first[static_cast<std::size_t>(lists)] = block.head[static_cast<std::size_t>(k)];
+    first_cell[static_cast<std::size_t>(lists)] = static_cast<std::uint8_t>(k);
+    lists += block.head[static_cast<std::size_t>(k)] != CellLists::kEnd ? 1 : 0;
+  }
+  CollisionBatch<D> batch;
+  const Vector no_shift{};
+  for (int list = 0; list < lists; ++list) {
+    const auto k = static_cast<std::size_t>(first_cell[static_cast<std::size_t>(list)]);
+    const Vector& shift = block.imaged ? block.shift[k] : no_shift;
+    const double shift_vx = block.imaged ? block.shift_vx[k] : 0.0;
+    std::int32_t j = first[static_cast<std::size_t>(list)];
+    do {
+      const ParticleRecord<D>& pj = particles_[at(j)];
+      const auto slot = static_cast<std::size_t>(batch.size);
+      const double dt_j = t_now_ - pj.t;
+      for (int a = 0; a < D; ++a) {
+        double vj = pj.v[a];
+        if constexpr (kGravity) {
+          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
+          vj += gravity_[a] * dt_j;
+        } else {
+          batch.r[a][slot] = pj.r[a] + vj * dt_j + shift[a] - ri[a];
+        }
+        batch.v[a][slot] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
       }
-      rel_velocity[a] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
-    }
-    const double contact = polydisperse ? contact_distance(i, j) : sigma;
-    if (const double t = collision_time(rel_position, rel_velocity, contact); t < best) {
-      best = t;
-      partner = j;
-    }
-  });
+      batch.contact[slot] = polydisperse ? contact_distance(i, j) : sigma;
+      batch.partner[slot] = j;
+      batch.size += j != i ? 1 : 0;  // the particle itself is written over
+      if (batch.full()) batch.take_earliest(best, partner);
+      j = pj.next;
+    } while (j != CellLists::kEnd);
+  }
+  batch.take_earliest(best, partner);
   return {crossing, partner, best};
 }
 
