@@ -90,8 +90,9 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];
         }
-        block.shift[static_cast<std::size_t>(block.count)] = shift;
-        block.shift_vx[static_cast<std::size_t>(block.count)] = row_shift.velocity_x;
+        CellImage& image = block.image[static_cast<std::size_t>(block.count)];
+        for (int a = 0; a < D; ++a) image.position[static_cast<std::size_t>(a)] = shift[a];
+        image.velocity_x = row_shift.velocity_x;
         visit(grid_.index(c, r, layer));
       }
     }
@@ -104,11 +105,13 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>&
                                        Visit&& visit) const {
   BlockCells block;
   block_cells(cell, reach, block);
-  const Vector no_shift{};
   for (int k = 0; k < block.count; ++k) {
     const auto at = static_cast<std::size_t>(k);
-    const Vector& shift = block.imaged ? block.shift[at] : no_shift;
-    const double shift_vx = block.imaged ? block.shift_vx[at] : 0.0;
+    Vector shift{};
+    if (block.imaged) {
+      for (int a = 0; a < D; ++a) shift[a] = block.image[at].position[static_cast<std::size_t>(a)];
+    }
+    const double shift_vx = block.imaged ? block.image[at].velocity_x : 0.0;
     for (std::int32_t j = block.head[at]; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
       if (j != i) visit(j, shift, shift_vx);
     }

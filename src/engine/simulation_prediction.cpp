@@ -130,11 +130,11 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
     lists += block.head[static_cast<std::size_t>(k)] != CellLists::kEnd ? 1 : 0;
   }
   CollisionBatch<D> batch;
-  const Vector no_shift{};
+  const CellImage itself{};
   for (int list = 0; list < lists; ++list) {
-    const auto k = static_cast<std::size_t>(first_cell[static_cast<std::size_t>(list)]);
-    const Vector& shift = block.imaged ? block.shift[k] : no_shift;
-    const double shift_vx = block.imaged ? block.shift_vx[k] : 0.0;
+    const CellImage& image = block.imaged ? block.image[first_cell[static_cast<std::size_t>(list)]] : itself;
+    const auto& shift = image.position;
+    const double shift_vx = image.velocity_x;
     std::int32_t j = first[static_cast<std::size_t>(list)];
     do {
       const ParticleRecord<D>& pj = particles_[at(j)];
@@ -143,10 +143,10 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
       for (int a = 0; a < D; ++a) {
         double vj = pj.v[a];
         if constexpr (kGravity) {
-          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[a] - ri[a];
+          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[static_cast<std::size_t>(a)] - ri[a];
           vj += gravity_[a] * dt_j;
         } else {
-          batch.r[a][slot] = pj.r[a] + vj * dt_j + shift[a] - ri[a];
+          batch.r[a][slot] = pj.r[a] + vj * dt_j + shift[static_cast<std::size_t>(a)] - ri[a];
         }
         batch.v[a][slot] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
       }
