@@ -22,7 +22,7 @@ constexpr std::size_t kMinimumCrowd = 64;
 }  // namespace
 
 std::int64_t EventQueue::bucket_of(double time) const {
-  const double q = std::floor(time / width_);
+  const double q = std::floor(time * buckets_per_time_);
   if (!(q < kBucketLimit)) return static_cast<std::int64_t>(kBucketLimit);
   if (!(q > -kBucketLimit)) return -static_cast<std::int64_t>(kBucketLimit);
   return static_cast<std::int64_t>(q);
@@ -35,7 +35,7 @@ void EventQueue::reset(std::int32_t particles) {
   current_.clear();
   current_.reserve(4 * kMinimumCrowd);
   bucket_ = 0;
-  width_ = 1.0;
+  buckets_per_time_ = 1.0;
   listed_ = 0;
   crowded_ = kMinimumCrowd;
 }
@@ -186,7 +186,7 @@ void EventQueue::rebuild() const {
   }
   const double mean = finite > 0 ? spread / static_cast<double>(finite) : 0.0;
   const double width = kEventsPerBucket * mean / static_cast<double>(std::max<std::size_t>(1, finite));
-  if (std::isfinite(width) && width > 0.0) width_ = width;
+  if (std::isfinite(width) && width > 0.0 && std::isfinite(1.0 / width)) buckets_per_time_ = 1.0 / width;
   std::fill(heads_.begin(), heads_.end(), kFirst);
   current_.clear();
   listed_ = 0;

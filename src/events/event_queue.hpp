@@ -88,7 +88,9 @@ class EventQueue {
   mutable HugePageVector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
   mutable std::vector<std::int32_t> current_;   // the current bucket: a binary heap by (time, id)
   mutable std::int64_t bucket_ = 0;             // the current bucket
-  mutable double width_ = 1.0;                  // of a bucket, in time
+  // The inverse of a bucket's width in time: a product where a quotient took ~14 cycles of latency
+  // per event.  Any monotonic map of times to buckets gives the same order of pops.
+  mutable double buckets_per_time_ = 1.0;
   mutable std::int64_t listed_ = 0;             // events in bucket lists
   mutable std::size_t crowded_ = 0;             // current_'s size that asks for a new width
 };
