@@ -17,6 +17,7 @@
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"
 #include "oracle/brute_force.hpp"
+#include "physics/collision_batch.hpp"
 
 namespace granule {
 namespace {
@@ -29,6 +30,9 @@ struct OracleCase {
   double shear_velocity;
   std::uint64_t seed;
   double size_ratio = 1.0;  // ≠ 1: a binary mixture, half the particles this much larger, m ∝ σ^d
+  // The engine's cells: with many particles each, a block holds more neighbours than one batch of
+  // pair tests (CollisionBatch::kCapacity), and the batches must give the pair-by-pair order.
+  double particles_per_cell = 1.0;
 };
 
 // Box 1 × 1.3 (× 0.9): not square, so that axis mix-ups show.
@@ -100,11 +104,15 @@ template <int D>
 void check_against_brute_force(const OracleCase& k) {
   SystemParams p = box_for(k);
   const ParticleState initial = random_gas(p, k);
-  CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, k.shear_velocity != 0.0, 1.0, std::nullopt};
+  CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, k.shear_velocity != 0.0, k.particles_per_cell, std::nullopt};
   request.dimension = D;
   request.length_z = p.length_z;
   const auto grid = choose_cell_grid(request);
   ASSERT_TRUE(grid.grid) << grid.error;
+  if (k.particles_per_cell != 1.0) {  // the case is there to fill more than one batch per block
+    const double block = std::pow(3.0, D) * k.particles / static_cast<double>(grid.grid->cell_count());
+    ASSERT_GT(block, CollisionBatch<D>::kCapacity);
+  }
   Simulation<D> sim(p, *grid.grid, initial);
 
   struct Recorder final : EventObserver<D> {
@@ -166,6 +174,8 @@ INSTANTIATE_TEST_SUITE_P(
                       OracleCase{2, 120, 0.6, 1.0, 0.0, 3}, OracleCase{2, 100, 0.05, 0.8, 3.0, 4},
                       OracleCase{2, 100, 0.3, 1.0, 2.0, 5}, OracleCase{2, 80, 0.5, 0.9, -4.0, 6},
                       OracleCase{2, 100, 0.3, 1.0, 2.0, 7, 1.6},  // binary mixture
+                      // 3×3 cells of about 11 disks: every block is the whole box, two batches
+                      OracleCase{2, 100, 0.3, 0.9, 2.0, 13, 1.6, 12.0},
                       // 3D: 27 images per pair make the reference slow, hence fewer spheres
                       OracleCase{3, 60, 0.05, 1.0, 0.0, 8}, OracleCase{3, 60, 0.25, 0.9, 0.0, 9},
                       OracleCase{3, 60, 0.1, 0.8, 3.0, 10}, OracleCase{3, 60, 0.2, 1.0, -2.0, 11, 1.5},
@@ -173,7 +183,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<OracleCase>& test) {
       const OracleCase& k = test.param;
       return std::to_string(k.dimension) + "D_" + (k.shear_velocity != 0.0 ? "LeesEdwards" : "Periodic") + "_nu" +
-             std::to_string(static_cast<int>(100 * k.packing_fraction)) + (k.size_ratio != 1.0 ? "_mixture" : "") +
+             std::to_string(static_cast<int>(100 * k.packing_fraction)) + (k.size_ratio != 1.0 ? "_mixture" : "") + (k.particles_per_cell != 1.0 ? "_crowded" : "") +
              "_seed" + std::to_string(k.seed);
     });
 
