@@ -30,9 +30,6 @@ struct CellGrid {
   std::int32_t index(int column, int row, int layer = 0) const {
     return static_cast<std::int32_t>((static_cast<std::int64_t>(layer) * ny + row) * nx + column);
   }
-  int column_of(std::int32_t cell) const { return cell % nx; }
-  int row_of(std::int32_t cell) const { return (cell / nx) % ny; }
-  int layer_of(std::int32_t cell) const { return cell / nx / ny; }
   int count(int axis) const { return axis == 0 ? nx : (axis == 1 ? ny : nz); }
   double size(int axis) const { return axis == 0 ? width : (axis == 1 ? height : depth); }
 };

@@ -51,7 +51,7 @@ template <int D>
 void Simulation<D>::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   for (std::int32_t i = 0; i < n; ++i) {
-    const int row = grid_.row_of(slots_[at(i)].cell);
+    const int row = cell_coordinates(slots_[at(i)].cell)[1];
     if (row == 0 || row == grid_.ny - 1 || meets_through_y_image(i)) {
       predict(i);  // its block reaches across the boundary, where the images' velocity changed
       continue;

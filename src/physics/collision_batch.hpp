@@ -15,8 +15,8 @@ namespace granule {
 
 template <int D>
 struct CollisionBatch {
-  // Enough for the 3^D block of cells of a monodisperse gas (at most 27·8 spheres or 9·4 disks fit,
-  // about 16 and 5 are there); a polydisperse scan that finds more is run in several batches.
+  // A block of cells holds about 16 spheres or 5 disks at the default occupancy (0.6 per cell); a
+  // scan that finds more (crowded cells, small grains of a mixture) runs in several batches.
   static constexpr int kCapacity = 64;
 
   // Candidate k: its id, its position and velocity relative to the particle (image applied), and
