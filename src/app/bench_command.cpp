@@ -24,6 +24,7 @@
 #include "cells/cell_grid.hpp"
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"
+#include "io/input_ranges.hpp"
 #include "observers/global_diagnostics.hpp"
 #include "theory/hard_spheres.hpp"
 #include "theory/steady_shear.hpp"
@@ -125,6 +126,7 @@ void run_workload(const Workload& w, const BenchOptions& o, Measurements measure
                           o.particles_per_cell.value_or(kDefaultParticlesPerCell), std::nullopt};
   request.dimension = D;
   request.length_z = p.length_z;
+  request.max_cells = kMaxEngineCells;
   const CellGridChoice grid = choose_cell_grid(request);
   const InitialStateResult init = make_initial_state(elastic_prerun(p), temperature, o.seed, Placement::kAuto);
   if (!grid.grid || !init.error.empty()) {

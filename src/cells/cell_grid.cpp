@@ -62,6 +62,11 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
     grid.nx = std::clamp(static_cast<int>(std::floor(lx / side)), kMinCells, max_nx);
     grid.ny = std::clamp(static_cast<int>(std::floor(ly / side)), kMinCells, max_ny);
     if (three_d) grid.nz = std::clamp(static_cast<int>(std::floor(lz / side)), kMinCells, max_nz);
+    while (grid.cell_count() > request.max_cells) {
+      int& most = grid.nx >= grid.ny && grid.nx >= grid.nz ? grid.nx : (grid.ny >= grid.nz ? grid.ny : grid.nz);
+      const double fitting = std::floor(most * (static_cast<double>(request.max_cells) / static_cast<double>(grid.cell_count())));
+      most = std::max(kMinCells, std::min(most - 1, static_cast<int>(fitting)));
+    }
   }
   grid.width = lx / grid.nx;
   grid.height = ly / grid.ny;

@@ -1,10 +1,12 @@
 // The simulation's cell grid on the sheared frame (ξ, y[, z]) and its per-cell particle lists
 // (thesis Appendix A.1: collisions are searched in the 3×3 block of cells around a particle, the
-// 3×3×3 block in 3D).  Cell ids are 32-bit per particle (4 B/particle less than 64-bit ids; the
-// configuration refuses grids of 2³¹ cells or more) and computed in 64-bit arithmetic.
+// 3×3×3 block in 3D).  A particle's cell id has 28 bits (it shares a word with the event kind,
+// events/event_slot.hpp; the configuration refuses grids of more than 2²⁸ cells), and grid
+// arithmetic is 64-bit.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +54,9 @@ struct CellGridRequest {
   std::optional<std::pair<int, int>> forced;  // user override [nx, ny] (2D)
   int dimension = 2;
   double length_z = 1.0;
+  // The most cells an automatic grid may have (an elongated box, whose short sides keep the
+  // minimum of 3 cells, gets wider cells along its long sides instead).
+  std::int64_t max_cells = std::numeric_limits<std::int64_t>::max();
 };
 
 // The grid for a box, or an explanation of why none fits (fewer than 3 cells per direction,

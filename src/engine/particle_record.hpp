@@ -3,13 +3,11 @@
 // then touches one record, 48 bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read
 // six separate arrays before (issue 18; docs/performance.md).  The rest of a particle's data
 // (its pending event, cell, candidate time) is read only when its own event runs and stays in
-// its EventSlot, below.
+// its EventSlot (events/event_slot.hpp).
 #pragma once
 
 #include <cstdint>
-#include <limits>
 
-#include "events/event.hpp"
 #include "geometry/vec.hpp"
 
 namespace granule {
@@ -26,20 +24,5 @@ struct alignas(D == 3 ? 64 : 16) ParticleRecord {
 };
 
 static_assert(sizeof(ParticleRecord<2>) == 48 && sizeof(ParticleRecord<3>) == 64);
-
-// What only a particle's own events read: its pending event (the time lives in the queue), the
-// collision candidate kept through crossings, and its cell, in one 24-byte slot.  An event reads
-// and a prediction writes them together: one cache line where five arrays cost five.
-struct EventSlot {
-  // The time of the collision candidate (`partner`), pending or not (+inf: none): kept through
-  // crossings, and through changes of U where the pair meets inside the box.
-  double collision_time = std::numeric_limits<double>::infinity();
-  std::int32_t partner = -1;         // the candidate partner (−1: none)
-  std::uint32_t partner_count = 0;   // its collision count when predicted (stale once it differs)
-  std::int32_t cell = 0;             // the cell the particle is listed in
-  EventKind kind = EventKind::kNone; // the pending event
-};
-
-static_assert(sizeof(EventSlot) == 24);
 
 }  // namespace granule

@@ -49,7 +49,7 @@ template <int D>
 Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
                           const ClockState& clock)
     : params_(params),
-      grid_(grid),
+      grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       frame_{params.length_x, params.length_y, 0.0},
@@ -57,7 +57,6 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];
   has_gravity_ = params.has_gravity();
   load(state);
-  allocate_arrays();
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
     last_collision_.resize(static_cast<std::size_t>(params.particles), -kInf);
@@ -83,15 +82,9 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
 }
 
 template <int D>
-void Simulation<D>::allocate_arrays() {
-  const auto n = static_cast<std::size_t>(params_.particles);
-  slots_.assign(n, EventSlot{});
-}
-
-template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(slots_) +
+  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) +
                       bytes(last_collision_) + lists_.bytes() + queue_.bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
@@ -128,7 +121,7 @@ void Simulation<D>::rebase() {
   const double delta = t_now_;
   for (auto& p : particles_) p.t -= delta;
   for (auto& t : last_collision_) t -= delta;
-  for (auto& slot : slots_) slot.collision_time -= delta;
+  for (EventSlot& s : queue_.slots()) s.collision_time -= delta;
   queue_.shift_times(delta);
   collapse_detector_.shift_times(delta);
   actions_.shift_times(delta);
@@ -168,11 +161,11 @@ void Simulation<D>::rebuild() {
     }
   }
   lists_.reset(grid_.cell_count());
-  for (std::int32_t i = 0; i < n; ++i) {
-    slots_[at(i)].cell = cell_of(position_now(i));
-    lists_.insert(particles_, i, slots_[at(i)].cell);
-  }
   queue_.reset(n);
+  for (std::int32_t i = 0; i < n; ++i) {
+    slot(i).set_cell(cell_of(position_now(i)));
+    lists_.insert(particles_, i, slot(i).cell());
+  }
   for (std::int32_t i = 0; i < n; ++i) predict(i);
 }
 
@@ -263,7 +256,7 @@ void Simulation<D>::start_production(const SystemParams& production) {
 template <int D>
 void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   advance(i);
-  const std::int32_t old_cell = slots_[at(i)].cell;
+  const std::int32_t old_cell = slot(i).cell();
   std::array<int, D> cell = cell_coordinates(old_cell);
   const int axis = crossing_axis(kind);
   const int direction = crossing_direction(kind);
@@ -286,7 +279,7 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   }
   lists_.remove(particles_, i, old_cell);
   lists_.insert(particles_, i, new_cell);
-  slots_[at(i)].cell = new_cell;
+  slot(i).set_cell(new_cell);
   predict_after_crossing(i, axis, direction);
 }
 
@@ -416,12 +409,12 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
 #ifdef GRANULE_PARANOID
     check_popped_event(i);
 #endif
-    const EventKind kind = slots_[at(i)].kind;
-    const std::int32_t j = slots_[at(i)].partner;
+    const EventKind kind = slot(i).kind();
+    const std::int32_t j = slot(i).partner;
     bool collided = false;
     bool hit_wall = false;
     if (kind == EventKind::kCollision) {
-      if (particles_[at(j)].count != slots_[at(i)].partner_count) {
+      if (particles_[at(j)].count != slot(i).partner_count) {
         predict(i);  // the partner has collided since: stale
       } else {
         collided = execute_collision(i, j);

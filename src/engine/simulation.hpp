@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -137,15 +138,22 @@ class Simulation {
   double bytes_per_particle() const;
 
  private:
-  void allocate_arrays();
   // The arrays and clocks a checkpoint holds by name (simulation_checkpoint.cpp); the event kinds,
   // cell lists, queue and collapse detector are saved by their own code.
   template <typename Self, typename Visit>
   static void visit_saved_state(Self& self, Visit&& visit);
+  // The grid, if its cell ids fit beside the event kind in an EventSlot (the configuration
+  // refuses larger grids with a message; this guards direct use of the class).
+  static const CellGrid& checked(const CellGrid& grid) {
+    if (grid.cell_count() > EventSlot::kCellLimit) throw std::invalid_argument("the engine's cell grid has more than 2^28 cells");
+    return grid;
+  }
   void load(const ParticleState& state);
   void rebuild();
   std::int64_t collapse_window() const { return std::max<std::int64_t>(1000, params_.particles); }
   void rebase();
+  EventSlot& slot(std::int32_t i) { return queue_.slot(i); }
+  const EventSlot& slot(std::int32_t i) const { return queue_.slot(i); }
   void advance(std::int32_t i);
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
@@ -258,8 +266,8 @@ class Simulation {
   void predict_after_crossing(std::int32_t i, int axis, int direction);
   // Whether particle i's kept candidate is still a valid collision: its partner has not collided since.
   bool candidate_valid(std::int32_t i) const {
-    const std::int32_t k = slots_[static_cast<std::size_t>(i)].partner;
-    return k < 0 || particles_[static_cast<std::size_t>(k)].count == slots_[static_cast<std::size_t>(i)].partner_count;
+    const std::int32_t k = slot(i).partner;
+    return k < 0 || particles_[static_cast<std::size_t>(k)].count == slot(i).partner_count;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
@@ -284,7 +292,7 @@ class Simulation {
   // The same over the offsets within `reach`.
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, const Reach& reach, Visit&& visit) const {
-    for_each_neighbour(i, cell_coordinates(slots_[static_cast<std::size_t>(i)].cell), reach, visit);
+    for_each_neighbour(i, cell_coordinates(slot(i).cell()), reach, visit);
   }
   // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
   template <typename Visit>
@@ -325,8 +333,8 @@ class Simulation {
   double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
   // Particles by plain id: the records a neighbour's collision test reads (position and velocity
-  // at local time t, cell-list link, collision counter), then the slots of what only a particle's
-  // own events read, then the arrays of optional features.
+  // at local time t, cell-list link, collision counter), then the arrays of optional features.
+  // What only a particle's own events read is its EventSlot, held by queue_.
   HugePageVector<ParticleRecord<D>> particles_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only
   // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
@@ -334,7 +342,6 @@ class Simulation {
   std::array<std::vector<double>, kSpinComponents> spin_;
   Vector gravity_;
   bool has_gravity_ = false;
-  HugePageVector<EventSlot> slots_;
   std::vector<double> last_collision_;  // TC model only
 
   CellLists lists_;

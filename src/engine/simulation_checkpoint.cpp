@@ -107,21 +107,22 @@ void visit_record_fields(Visit&& visit) {
   visit("cell_list_next", [](auto& p) -> auto& { return p.next; });
 }
 
-// The same for the event slots (the event kind, a byte on file, is saved and checked apart).
+// The same for the event slots (the cell and the event kind, packed in one word of the slot, and
+// the event time, the queue's, are saved and checked apart).
 template <typename Visit>
 void visit_slot_fields(Visit&& visit) {
-  visit("cell", [](auto& s) -> auto& { return s.cell; });
   visit("event_partner", [](auto& s) -> auto& { return s.partner; });
   visit("event_partner_count", [](auto& s) -> auto& { return s.partner_count; });
   visit("collision_time", [](auto& s) -> auto& { return s.collision_time; });
 }
 
-// Each field of `items` as one array of the archive.
-template <typename Items, typename Fields>
-void put_fields(StateArchive& archive, const std::string& prefix, const Items& items, Fields&& visit_fields) {
+// Each field of `items` as one array of the archive (generated when the archive is written: the
+// view of the items must outlive this call, the items themselves are the engine's).
+template <typename Item, typename Fields>
+void put_fields(StateArchive& archive, const std::string& prefix, std::span<const Item> items, Fields&& visit_fields) {
   visit_fields([&](const char* name, auto field) {
     using Value = std::decay_t<decltype(field(items[0]))>;
-    archive.put_generated<Value>(prefix + name, items.size(), [&items, field](std::size_t first, std::span<Value> out) {
+    archive.put_generated<Value>(prefix + name, items.size(), [items, field](std::size_t first, std::span<Value> out) {
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = field(items[first + k]);
     });
   });
@@ -197,10 +198,14 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
       archive.put_view(prefix + name, value);
     }
   });
-  put_fields(archive, prefix, particles_, [](auto&& visit) { visit_record_fields<D>(visit); });
-  put_fields(archive, prefix, slots_, [](auto&& visit) { visit_slot_fields(visit); });
-  archive.put_generated<std::uint8_t>(prefix + "event_kind", slots_.size(), [this](std::size_t first, std::span<std::uint8_t> out) {
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(slots_[first + k].kind);
+  put_fields(archive, prefix, std::span<const ParticleRecord<D>>(particles_), [](auto&& visit) { visit_record_fields<D>(visit); });
+  const std::span<const EventSlot> slots = queue_.slots();
+  put_fields(archive, prefix, slots, [](auto&& visit) { visit_slot_fields(visit); });
+  archive.put_generated<std::int32_t>(prefix + "cell", slots.size(), [slots](std::size_t first, std::span<std::int32_t> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = slots[first + k].cell();
+  });
+  archive.put_generated<std::uint8_t>(prefix + "event_kind", slots.size(), [slots](std::size_t first, std::span<std::uint8_t> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::uint8_t>(slots[first + k].kind());
   });
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
@@ -213,7 +218,7 @@ template <int D>
 Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
                           const std::string& prefix)
     : params_(params),
-      grid_(grid),
+      grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       frame_{params.length_x, params.length_y, 0.0},
@@ -226,7 +231,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
   const auto n = static_cast<std::size_t>(params.particles);
   particles_.assign(n, ParticleRecord<D>{});
-  slots_.assign(n, EventSlot{});
+  queue_.reset(static_cast<std::int32_t>(n));
   const auto get_fields = [&](auto& items, auto&& visit_fields) {
     visit_fields([&](const char* name, auto field) {
       const auto values = array_of_size<std::decay_t<decltype(field(items[0]))>>(archive, prefix + name, n);
@@ -234,7 +239,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     });
   };
   get_fields(particles_, [](auto&& visit) { visit_record_fields<D>(visit); });
-  get_fields(slots_, [](auto&& visit) { visit_slot_fields(visit); });
+  const std::span<EventSlot> slots = queue_.slots();
+  get_fields(slots, [](auto&& visit) { visit_slot_fields(visit); });
   visit_saved_state(*this, [&](const char* name, auto& value) {
     using Value = std::decay_t<decltype(value)>;
     if constexpr (std::is_same_v<Value, double>) {
@@ -258,19 +264,19 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
   schedule_realignment();
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);
+  const auto cells = array_of_size<std::int32_t>(archive, prefix + "cell", n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!valid_event_kind(kinds[i], D)) throw std::runtime_error("checkpoint has an unknown event kind");
-    slots_[i].kind = static_cast<EventKind>(kinds[i]);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool collision = slots_[i].kind == EventKind::kCollision;
-    if (slots_[i].cell < 0 || slots_[i].cell >= grid.cell_count() || slots_[i].partner < -1 || slots_[i].partner >= params.particles ||
-        (collision && slots_[i].partner < 0)) {
+    const bool collision = kinds[i] == static_cast<std::uint8_t>(EventKind::kCollision);
+    if (cells[i] < 0 || cells[i] >= grid.cell_count() || slots[i].partner < -1 || slots[i].partner >= params.particles ||
+        (collision && slots[i].partner < 0)) {
       throw std::runtime_error("checkpoint has a disk with an invalid cell or event partner");
     }
+    slots[i].set_cell(cells[i]);
+    slots[i].set_kind(static_cast<EventKind>(kinds[i]));
   }
   lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), particles_);
-  queue_.restore(archive, prefix + "queue_", static_cast<std::int32_t>(params.particles));
+  queue_.restore(archive, prefix + "queue_");
   collapse_detector_.restore(archive, prefix + "collapse_");
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.
   try {

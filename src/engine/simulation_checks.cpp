@@ -39,7 +39,7 @@ void Simulation<D>::check_invariants() const {
     std::int64_t steps = 0;
     const auto cell = static_cast<std::int32_t>(c);
     for (std::int32_t j = lists_.first(cell); j != CellLists::kEnd; j = particles_[at(j)].next) {
-      if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || slots_[at(j)].cell != cell) {
+      if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || slot(j).cell() != cell) {
         fail("cell list ", c, " is corrupt at particle ", j);
       }
     }
@@ -59,7 +59,7 @@ void Simulation<D>::check_invariants() const {
       if (r[a] < inside || r[a] > box_length(a) - inside) fail("particle ", i, " is in a wall along axis ", a, " at ", r[a]);
     }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
-    const std::array<int, D> cell = cell_coordinates(slots_[at(i)].cell);
+    const std::array<int, D> cell = cell_coordinates(slot(i).cell());
     for (int a = 0; a < D; ++a) {
       const double coordinate = a == 0 ? frame_.sheared_x(r[0], r[1], s) : r[a];
       if (coordinate < cell[a] * grid_.size(a) - cell_tolerance || coordinate > (cell[a] + 1) * grid_.size(a) + cell_tolerance) {
@@ -104,11 +104,11 @@ void Simulation<D>::check_invariants() const {
 
 template <int D>
 void Simulation<D>::check_popped_event(std::int32_t i) const {
-  const EventKind kind = slots_[at(i)].kind;
+  const EventKind kind = slot(i).kind();
   const Vector r = position_now(i);
   if (kind == EventKind::kCollision) {
-    const std::int32_t j = slots_[at(i)].partner;
-    if (particles_[at(j)].count != slots_[at(i)].partner_count) return;  // stale: nothing to execute
+    const std::int32_t j = slot(i).partner;
+    if (particles_[at(j)].count != slot(i).partner_count) return;  // stale: nothing to execute
     const Vector offset = position_now(j) - r;
     const double distance = norm(offset + nearest_image(offset).shift.position);
     const double sigma = contact_distance(i, j);
@@ -130,7 +130,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   // A crossing: the particle must be on the face it is about to cross.
   const int axis = crossing_axis(kind);
   const double coordinate = axis == 0 ? frame_.sheared_x(r[0], r[1], strain()) : r[axis];
-  const int cell = cell_coordinates(slots_[at(i)].cell)[static_cast<std::size_t>(axis)];
+  const int cell = cell_coordinates(slot(i).cell())[static_cast<std::size_t>(axis)];
   const double face = (cell + (crossing_direction(kind) > 0 ? 1 : 0)) * grid_.size(axis);
   if (std::abs(face - coordinate) > kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth})) {
     fail("crossing of particle ", i, " popped ", face - coordinate, " away from its face");

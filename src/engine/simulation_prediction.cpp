@@ -107,7 +107,7 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
                                                                 Candidate known) const {
   const Vector ri = position_now(i);
   const Vector vi = velocity_now(i);
-  const std::array<int, D> cell = cell_coordinates(slots_[at(i)].cell);
+  const std::array<int, D> cell = cell_coordinates(slot(i).cell());
   const Crossing crossing = next_crossing(i, cell, ri, vi);
 
   // Collisions with the particles of the cells within reach, tested in batches (CollisionBatch).
@@ -168,10 +168,10 @@ void Simulation<D>::predict(std::int32_t i) {
 
 template <int D>
 void Simulation<D>::store(std::int32_t i, const Prediction& next) {
-  slots_[at(i)].kind = next.kind();
-  slots_[at(i)].partner = next.partner;
-  slots_[at(i)].partner_count = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
-  slots_[at(i)].collision_time = t_now_ + next.collision_delay;
+  slot(i).set_kind(next.kind());
+  slot(i).partner = next.partner;
+  slot(i).partner_count = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
+  slot(i).collision_time = t_now_ + next.collision_delay;
   queue_.update(i, t_now_ + next.delay());
 }
 
@@ -189,7 +189,7 @@ void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int directi
     predict(i);
     return;
   }
-  const Candidate kept{slots_[at(i)].partner, slots_[at(i)].collision_time - t_now_};
+  const Candidate kept{slot(i).partner, slot(i).collision_time - t_now_};
   store(i, next_event(i, Reach::layer_ahead(axis, direction), kept));
 }
 

@@ -51,17 +51,17 @@ template <int D>
 void Simulation<D>::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   for (std::int32_t i = 0; i < n; ++i) {
-    const int row = cell_coordinates(slots_[at(i)].cell)[1];
+    const int row = cell_coordinates(slot(i).cell())[1];
     if (row == 0 || row == grid_.ny - 1 || meets_through_y_image(i)) {
       predict(i);  // its block reaches across the boundary, where the images' velocity changed
       continue;
     }
     // The earliest collision inside the box is unchanged; the crossing in ξ is not.
-    const Crossing crossing = next_crossing(i, cell_coordinates(slots_[static_cast<std::size_t>(i)].cell), position_now(i), velocity_now(i));
+    const Crossing crossing = next_crossing(i, cell_coordinates(slot(i).cell()), position_now(i), velocity_now(i));
     const double t_crossing = t_now_ + crossing.delay;
-    const bool collision_first = slots_[at(i)].collision_time < t_crossing;
-    slots_[at(i)].kind = collision_first ? EventKind::kCollision : crossing.kind;
-    queue_.update(i, collision_first ? slots_[at(i)].collision_time : t_crossing);
+    const bool collision_first = slot(i).collision_time < t_crossing;
+    slot(i).set_kind(collision_first ? EventKind::kCollision : crossing.kind);
+    queue_.update(i, collision_first ? slot(i).collision_time : t_crossing);
   }
 }
 
@@ -70,9 +70,9 @@ bool Simulation<D>::meets_through_y_image(std::int32_t i) const {
   // A candidate kept through crossings may be a pair that meets across the y boundary although
   // both now sit in inner rows (one of them crossed the boundary since): at contact their lab
   // ordinates, extrapolated from now, are then about L_y apart instead of σ.
-  const std::int32_t k = slots_[at(i)].partner;
-  if (k < 0 || !candidate_valid(i) || slots_[at(i)].collision_time == kInf) return false;
-  const double delay = slots_[at(i)].collision_time - t_now_;
+  const std::int32_t k = slot(i).partner;
+  if (k < 0 || !candidate_valid(i) || slot(i).collision_time == kInf) return false;
+  const double delay = slot(i).collision_time - t_now_;
   return std::abs(position_after(k, delay + t_now_ - particles_[at(k)].t)[1] -
                   position_after(i, delay + t_now_ - particles_[at(i)].t)[1]) >
          0.5 * params_.length_y;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 namespace granule {
 
@@ -30,8 +31,8 @@ std::int64_t EventQueue::bucket_of(double time) const {
 
 void EventQueue::reset(std::int32_t particles) {
   const auto n = static_cast<std::size_t>(particles);
-  nodes_.assign(n, Node{kInf, kFirst, kUnscheduled});
-  heads_.assign(std::bit_ceil(std::max<std::size_t>(16, n / 2)), kFirst);
+  slots_.assign(n, EventSlot{});
+  heads_.assign(std::bit_ceil(std::max<std::size_t>(16, n / 2)), kEnd);
   current_.clear();
   current_.reserve(4 * kMinimumCrowd);
   bucket_ = 0;
@@ -42,7 +43,7 @@ void EventQueue::reset(std::int32_t particles) {
 
 void EventQueue::update(std::int32_t particle, double time) {
   remove(particle);
-  nodes_[static_cast<std::size_t>(particle)].time = time;
+  mutable_slot(particle).time_ = time;
   insert(particle);
   // A width too large for the present event rate (the first one is a guess): fit it again, unless
   // the bucket is full of one time, which no width can split (then not before it doubles).
@@ -50,64 +51,52 @@ void EventQueue::update(std::int32_t particle, double time) {
 }
 
 void EventQueue::insert(std::int32_t particle) const {
-  const double time = nodes_[static_cast<std::size_t>(particle)].time;
-  if (time == kInf) {
-    nodes_[static_cast<std::size_t>(particle)].previous = kUnscheduled;
-    return;
-  }
+  const double time = slot(particle).time_;
+  if (time == kInf) return;
   const std::int64_t bucket = bucket_of(time);
   if (bucket < bucket_) {
     // Earlier than the current bucket (the clock stopped before the top, and events were
     // predicted afresh): the current bucket goes back to its list and this one becomes current.
-    for (const std::int32_t other : current_) link(other, slot_of(bucket_));
+    for (const std::int32_t other : current_) link(other, list_of(bucket_));
     current_.clear();
     bucket_ = bucket;
   }
   if (bucket == bucket_) {
     push_current(particle);
   } else {
-    link(particle, slot_of(bucket));
+    link(particle, list_of(bucket));
   }
 }
 
+// A particle is in the current bucket's heap exactly when its time falls in the current bucket,
+// and in a bucket list when it falls in a later one (insert and settle keep it so).
 void EventQueue::remove(std::int32_t particle) const {
-  const auto i = static_cast<std::size_t>(particle);
-  if (nodes_[i].previous == kUnscheduled) return;
-  if (nodes_[i].previous == kCurrent) {
-    erase_current(static_cast<std::size_t>(nodes_[i].next));
+  const double time = slot(particle).time_;
+  if (time == kInf) return;
+  const std::int64_t bucket = bucket_of(time);
+  if (bucket == bucket_) {
+    erase_current(static_cast<std::size_t>(slot(particle).link_));
   } else {
-    unlink(particle, slot_of(bucket_of(nodes_[i].time)));
+    unlink(particle, list_of(bucket));
   }
-  nodes_[i].previous = kUnscheduled;
 }
 
-void EventQueue::link(std::int32_t particle, std::size_t slot) const {
-  const auto i = static_cast<std::size_t>(particle);
-  const std::int32_t head = heads_[slot];
-  nodes_[i].next = head;
-  nodes_[i].previous = kFirst;
-  if (head != kFirst) nodes_[static_cast<std::size_t>(head)].previous = particle;
-  heads_[slot] = particle;
+void EventQueue::link(std::int32_t particle, std::size_t list) const {
+  mutable_slot(particle).link_ = heads_[list];
+  heads_[list] = particle;
   ++listed_;
 }
 
-void EventQueue::unlink(std::int32_t particle, std::size_t slot) const {
-  const auto i = static_cast<std::size_t>(particle);
-  const std::int32_t before = nodes_[i].previous;
-  const std::int32_t after = nodes_[i].next;
-  if (before == kFirst) {
-    heads_[slot] = after;
-  } else {
-    nodes_[static_cast<std::size_t>(before)].next = after;
-  }
-  if (after != kFirst) nodes_[static_cast<std::size_t>(after)].previous = before;
+void EventQueue::unlink(std::int32_t particle, std::size_t list) const {
+  std::int32_t* link = &heads_[list];
+  while (*link != particle) link = &mutable_slot(*link).link_;
+  *link = slot(particle).link_;
   --listed_;
 }
 
 void EventQueue::push_current(std::int32_t particle) const {
-  nodes_[static_cast<std::size_t>(particle)].previous = kCurrent;
   current_.push_back(particle);
-  nodes_[static_cast<std::size_t>(particle)].next = static_cast<std::int32_t>(current_.size() - 1);
+  mutable_slot(particle).link_ = static_cast<std::int32_t>(current_.size() - 1);
   sift_up(current_.size() - 1);
 }
 
@@ -117,7 +106,7 @@ void EventQueue::erase_current(std::size_t position) const {
   if (position == current_.size()) return;
   place(position, last);
   sift_up(position);
-  sift_down(static_cast<std::size_t>(nodes_[static_cast<std::size_t>(last)].next));
+  sift_down(static_cast<std::size_t>(slot(last).link_));
 }
 
 void EventQueue::sift_up(std::size_t position) const {
@@ -147,27 +136,28 @@ void EventQueue::sift_down(std::size_t position) const {
 
 void EventQueue::settle() const {
   if (!current_.empty() || listed_ == 0) return;
-  const std::int64_t slots = static_cast<std::int64_t>(heads_.size());
+  const std::int64_t lists = static_cast<std::int64_t>(heads_.size());
   for (std::int64_t step = 0; current_.empty(); ++step) {
-    if (step == slots) {
+    if (step == lists) {
       // A whole turn of the calendar without an event: jump to the earliest bucket there is.
       std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
       for (const std::int32_t head : heads_) {
-        for (std::int32_t p = head; p != kFirst; p = nodes_[static_cast<std::size_t>(p)].next) {
-          earliest = std::min(earliest, bucket_of(nodes_[static_cast<std::size_t>(p)].time));
-        }
+        for (std::int32_t p = head; p != kEnd; p = slot(p).link_) earliest = std::min(earliest, bucket_of(slot(p).time_));
       }
       bucket_ = earliest - 1;
     }
     ++bucket_;
-    const std::size_t slot = slot_of(bucket_);
-    for (std::int32_t p = heads_[slot]; p != kFirst;) {
-      const std::int32_t after = nodes_[static_cast<std::size_t>(p)].next;
-      if (bucket_of(nodes_[static_cast<std::size_t>(p)].time) == bucket_) {
-        unlink(p, slot);
+    // Move this bucket's events from its list to the heap, unlinking them on the way.
+    std::int32_t* link = &heads_[list_of(bucket_)];
+    while (*link != kEnd) {
+      const std::int32_t p = *link;
+      if (bucket_of(slot(p).time_) == bucket_) {
+        *link = slot(p).link_;
+        --listed_;
         push_current(p);
+      } else {
+        link = &mutable_slot(p).link_;
       }
-      p = after;
     }
   }
 }
@@ -176,67 +166,70 @@ void EventQueue::rebuild() const {
   // The width: kEventsPerBucket events per bucket at the present density of times ahead, the
   // number of finite events over their mean distance from the earliest.
   double earliest = kInf;
-  for (const Node& node : nodes_) earliest = std::min(earliest, node.time);
+  for (const EventSlot& s : slots_) earliest = std::min(earliest, s.time_);
   double spread = 0.0;
   std::size_t finite = 0;
-  for (const Node& node : nodes_) {
-    if (node.time == kInf) continue;
-    spread += node.time - earliest;
+  for (const EventSlot& s : slots_) {
+    if (s.time_ == kInf) continue;
+    spread += s.time_ - earliest;
     ++finite;
   }
   const double mean = finite > 0 ? spread / static_cast<double>(finite) : 0.0;
   const double width = kEventsPerBucket * mean / static_cast<double>(std::max<std::size_t>(1, finite));
   if (std::isfinite(width) && width > 0.0 && std::isfinite(1.0 / width)) buckets_per_time_ = 1.0 / width;
-  std::fill(heads_.begin(), heads_.end(), kFirst);
+  std::fill(heads_.begin(), heads_.end(), kEnd);
   current_.clear();
   listed_ = 0;
   bucket_ = std::isfinite(earliest) ? bucket_of(earliest) : 0;
-  for (std::size_t i = 0; i < nodes_.size(); ++i) insert(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < slots_.size(); ++i) insert(static_cast<std::int32_t>(i));
   crowded_ = std::max(kMinimumCrowd, 2 * current_.size());
 }
 
 bool EventQueue::is_consistent() const {
+  // Each particle with a finite time is met once, in its bucket's list or in the heap; no other is.
+  std::vector<char> met(slots_.size(), 0);
+  const auto meet = [&](std::int32_t p) {
+    return p >= 0 && static_cast<std::size_t>(p) < slots_.size() && slot(p).time_ != kInf && met[static_cast<std::size_t>(p)]++ == 0;
+  };
   std::int64_t listed = 0;
-  for (std::size_t slot = 0; slot < heads_.size(); ++slot) {
-    std::int32_t before = kFirst;
-    for (std::int32_t p = heads_[slot]; p != kFirst; p = nodes_[static_cast<std::size_t>(p)].next) {
-      const auto i = static_cast<std::size_t>(p);
-      if (i >= nodes_.size() || nodes_[i].previous != before || slot_of(bucket_of(nodes_[i].time)) != slot || !(bucket_of(nodes_[i].time) > bucket_)) return false;
-      if (++listed > static_cast<std::int64_t>(nodes_.size())) return false;
-      before = p;
+  for (std::size_t list = 0; list < heads_.size(); ++list) {
+    for (std::int32_t p = heads_[list]; p != kEnd; p = slot(p).link_) {
+      if (!meet(p)) return false;
+      ++listed;
+      const std::int64_t bucket = bucket_of(slot(p).time_);
+      if (list_of(bucket) != list || !(bucket > bucket_)) return false;
     }
   }
   if (listed != listed_) return false;
   for (std::size_t k = 0; k < current_.size(); ++k) {
-    const auto i = static_cast<std::size_t>(current_[k]);
-    if (i >= nodes_.size() || nodes_[i].previous != kCurrent || nodes_[i].next != static_cast<std::int32_t>(k) || bucket_of(nodes_[i].time) != bucket_) return false;
-    if (k > 0 && earlier(current_[k], current_[(k - 1) / 2])) return false;
+    const std::int32_t p = current_[k];
+    if (!meet(p) || slot(p).link_ != static_cast<std::int32_t>(k) || bucket_of(slot(p).time_) != bucket_) return false;
+    if (k > 0 && earlier(p, current_[(k - 1) / 2])) return false;
   }
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    if ((nodes_[i].time == kInf) != (nodes_[i].previous == kUnscheduled)) return false;
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    if ((slots_[i].time_ != kInf) != (met[i] == 1)) return false;
   }
   return true;
 }
 
 void EventQueue::shift_times(double delta) {
-  for (Node& node : nodes_) node.time -= delta;
+  for (EventSlot& s : slots_) s.time_ -= delta;
   rebuild();
 }
 
 void EventQueue::save(StateArchive& archive, const std::string& prefix) const {
-  archive.put_generated<double>(prefix + "time", nodes_.size(), [this](std::size_t first, std::span<double> out) {
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = nodes_[first + k].time;
+  archive.put_generated<double>(prefix + "time", slots_.size(), [this](std::size_t first, std::span<double> out) {
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = slots_[first + k].time_;
   });
 }
 
-void EventQueue::restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles) {
+void EventQueue::restore(const StateArchive& archive, const std::string& prefix) {
   const auto& times = archive.get<double>(prefix + "time");
-  if (times.size() != static_cast<std::size_t>(particles)) throw std::runtime_error("checkpoint event queue has the wrong size");
+  if (times.size() != slots_.size()) throw std::runtime_error("checkpoint event queue has the wrong size");
   if (std::any_of(times.begin(), times.end(), [](double t) { return std::isnan(t); })) {
     throw std::runtime_error("checkpoint event queue has a time that is not a number");
   }
-  reset(particles);
-  for (std::size_t i = 0; i < times.size(); ++i) nodes_[i].time = times[i];
+  for (std::size_t i = 0; i < times.size(); ++i) slots_[i].time_ = times[i];
   rebuild();
 }
 

@@ -1,8 +1,14 @@
-// The pending event time of every particle, ordered by (time, particle id): a calendar of time
+// The pending event of every particle, ordered by (time, particle id): a calendar of time
 // buckets (Brown 1988; Smallenburg, Eur. Phys. J. E 45, 22 (2022), keeps his events so), with the
 // events of the current bucket in a small binary heap.  Re-scheduling a particle is O(1) expected
 // where the binary heap of every particle it replaced cost O(log N) cache misses (a quarter of the
 // run time at N = 10⁵: docs/performance.md).
+//
+// The queue holds each particle's EventSlot: its time and link are the queue's, the rest is the
+// engine's, so that an event touches one slot.  Bucket lists are singly linked: a list holds about
+// two events, and the walk to a particle's predecessor costs about what a back link's update did,
+// without its 4 bytes.  Where a particle is (no event, the current bucket, a bucket list) follows
+// from its time and the current bucket.
 //
 // Ties are broken by the particle id, so the order of pops is a function of the times alone: not
 // of the bucket width, of the calendar's layout or of the order of the updates.  The width is
@@ -11,18 +17,25 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "engine/state_archive.hpp"
+#include "events/event_slot.hpp"
 #include "memory/huge_page_allocator.hpp"
 
 namespace granule {
 
 class EventQueue {
  public:
-  // All particles present, at time +inf.
+  // All particles present, at time +inf, with default slots.
   void reset(std::int32_t particles);
+  // A particle's slot: the engine's fields are free to change; the time changes through update().
+  EventSlot& slot(std::int32_t particle) { return slots_[static_cast<std::size_t>(particle)]; }
+  const EventSlot& slot(std::int32_t particle) const { return slots_[static_cast<std::size_t>(particle)]; }
+  std::span<EventSlot> slots() { return slots_; }
+  std::span<const EventSlot> slots() const { return slots_; }
   // Set a particle's event time (any non-NaN double; +inf: nothing pending).
   void update(std::int32_t particle, double time);
   // The particle whose event comes first (the lowest id of a tie; particle 0 when every time is
@@ -31,50 +44,43 @@ class EventQueue {
     settle();
     return current_.empty() ? 0 : current_.front();
   }
-  double top_time() const { return nodes_[static_cast<std::size_t>(top())].time; }
-  double time_of(std::int32_t particle) const { return nodes_[static_cast<std::size_t>(particle)].time; }
+  double top_time() const { return slot(top()).time_; }
+  double time_of(std::int32_t particle) const { return slot(particle).time_; }
   // Every particle is where its time says and the current bucket is in heap order (the
   // GRANULE_PARANOID build checks it at every re-base).
   bool is_consistent() const;
-  // Subtract the same amount from every time (clock re-basing); order is preserved.
+  // Subtract the same amount from every event time (clock re-basing); order is preserved.
   void shift_times(double delta);
   void save(StateArchive& archive, const std::string& prefix) const;
-  void restore(const StateArchive& archive, const std::string& prefix, std::int32_t particles);
+  // The times saved by save(), into the slots of a queue reset() to the same number of particles
+  // (whose other fields the engine restores).
+  void restore(const StateArchive& archive, const std::string& prefix);
   std::size_t bytes() const {
-    return nodes_.capacity() * sizeof(Node) + (heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
+    return slots_.capacity() * sizeof(EventSlot) + (heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
   }
 
  private:
-  // A particle's event time and its links, in one 16-byte node: an update, and the walk of a
-  // bucket list, touch one cache line per particle where three arrays cost three.
-  struct Node {
-    double time;
-    std::int32_t next;      // next in its bucket list, or its position in current_
-    std::int32_t previous;  // previous in its bucket list, or a marker below
-  };
-  // `previous` of a particle not in a bucket list: +inf time, or in the current bucket's heap.
-  static constexpr std::int32_t kUnscheduled = -3;
-  static constexpr std::int32_t kCurrent = -2;
-  static constexpr std::int32_t kFirst = -1;  // first of its bucket list
+  static constexpr std::int32_t kEnd = -1;  // the end of a bucket list
 
   std::int64_t bucket_of(double time) const;
-  std::size_t slot_of(std::int64_t bucket) const { return static_cast<std::size_t>(bucket) & (heads_.size() - 1); }
+  std::size_t list_of(std::int64_t bucket) const { return static_cast<std::size_t>(bucket) & (heads_.size() - 1); }
   bool earlier(std::int32_t a, std::int32_t b) const {
-    const double ta = nodes_[static_cast<std::size_t>(a)].time;
-    const double tb = nodes_[static_cast<std::size_t>(b)].time;
+    const double ta = slot(a).time_;
+    const double tb = slot(b).time_;
     return ta < tb || (ta == tb && a < b);
   }
   void insert(std::int32_t particle) const;
   void remove(std::int32_t particle) const;
-  void link(std::int32_t particle, std::size_t slot) const;
-  void unlink(std::int32_t particle, std::size_t slot) const;
+  void link(std::int32_t particle, std::size_t list) const;
+  void unlink(std::int32_t particle, std::size_t list) const;
+  EventSlot& mutable_slot(std::int32_t particle) const { return slots_[static_cast<std::size_t>(particle)]; }
   void push_current(std::int32_t particle) const;
   void erase_current(std::size_t position) const;
   void sift_up(std::size_t position) const;
   void sift_down(std::size_t position) const;
   void place(std::size_t position, std::int32_t particle) const {
     current_[position] = particle;
-    nodes_[static_cast<std::size_t>(particle)].next = static_cast<std::int32_t>(position);
+    mutable_slot(particle).link_ = static_cast<std::int32_t>(position);
   }
   // Make the current bucket the earliest non-empty one (the calendar moves lazily, when the top
   // is asked for, so that updates at times before a jump never meet a calendar ahead of them).
@@ -84,8 +90,8 @@ class EventQueue {
 
   // The calendar's state changes when the top is looked up (settle), which the engine does in its
   // const queries: it is mutable, the order it gives is not (only the links change there).
-  mutable HugePageVector<Node> nodes_;
-  mutable HugePageVector<std::int32_t> heads_;     // bucket lists, 2^k slots; bucket b in slot b mod 2^k
+  mutable HugePageVector<EventSlot> slots_;
+  mutable HugePageVector<std::int32_t> heads_;     // bucket lists, 2^k of them; bucket b in list b mod 2^k
   mutable std::vector<std::int32_t> current_;   // the current bucket: a binary heap by (time, id)
   mutable std::int64_t bucket_ = 0;             // the current bucket
   // The inverse of a bucket's width in time: a product where a quotient took ~14 cycles of latency

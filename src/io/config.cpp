@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "cells/cell_grid.hpp"
+#include "events/event_slot.hpp"
 #include "io/config_geometry.hpp"
 #include "io/config_reader.hpp"
 #include "io/config_roughness.hpp"
@@ -68,7 +69,8 @@ void require_one_of(const ConfigReader& in, const std::string& count, const std:
   if (in.has(count) && in.has(time)) throw ConfigError{fmt::format("{} and {} are both set: give one", count, time)};
 }
 
-// The engine's cell grid must exist (choose_cell_grid explains why not) and have 32-bit cell ids.
+// The engine's cell grid must exist (choose_cell_grid explains why not) and have 28-bit cell ids.
+static_assert(kMaxEngineCells <= EventSlot::kCellLimit, "every cell id of an accepted grid fits in an event slot");
 void check_engine_grid(const RunConfig& c) {
   const SystemParams& s = c.system;
   const CellGridChoice choice = choose_cell_grid(engine_grid_request(c));
@@ -76,7 +78,7 @@ void check_engine_grid(const RunConfig& c) {
   const std::int64_t cells = choice.grid->cell_count();
   if (cells > kMaxEngineCells) {
     throw ConfigError{fmt::format("system.box gives an engine grid of {} × {} × {} = {} cells, more than "
-                                  "2^31 − 1: {}raise engine.particles_per_cell",
+                                  "2^28: {}raise engine.particles_per_cell",
                                   choice.grid->nx, choice.grid->ny, choice.grid->nz, cells,
                                   s.dimension == 2 ? "set engine.cells or " : "")};
   }
@@ -129,10 +131,10 @@ RunConfig resolve(const toml::table& root) {
       in.number("output.checkpoint_every_seconds", NumberRange{0.0, 3.2e7}, " seconds of wall time (0: at every stop)")
           .value_or(600.0);
 
-  // The engine needs about N/particles_per_cell cells, each with a 32-bit id.
+  // The engine needs about N/particles_per_cell cells, each with a 28-bit id.
   const double min_per_cell = std::max(0.1, static_cast<double>(n) / static_cast<double>(kMaxEngineCells));
   c.particles_per_cell = in.number("engine.particles_per_cell", NumberRange{min_per_cell, 20.0},
-                                   min_per_cell > 0.1 ? fmt::format(" for N = {} (at most 2^31 − 1 engine cells)", n)
+                                   min_per_cell > 0.1 ? fmt::format(" for N = {} (at most 2^28 engine cells)", n)
                                                       : std::string{})
                              .value_or(std::max(min_per_cell, kDefaultParticlesPerCell));
   // Grids given by hand have two counts: 3D runs choose theirs (engine, diagnostics, fields).
@@ -231,6 +233,7 @@ CellGridRequest engine_grid_request(const RunConfig& config) {
                           config.engine_cells};
   request.dimension = s.dimension;
   request.length_z = s.length_z;
+  request.max_cells = kMaxEngineCells;
   return request;
 }
 

@@ -56,8 +56,10 @@ inline constexpr double kMaxShearOverThermalSpeed = 1e10;
 // Largest number of collisions any count setting may name: 2⁶², so that a count plus an interval
 // (each ≤ 2⁶²) still fits in an int64.
 inline constexpr double kMaxCollisions = 4611686018427387904.0;
-// Largest number of engine cells: cell ids are 32-bit.
-inline constexpr std::int64_t kMaxEngineCells = 2147483647;
+// Largest number of engine cells: cell ids have 28 bits (the event slot keeps the event kind in
+// the other 4 of their word, events/event_slot.hpp).  At the default occupancy that is 1.6·10⁸
+// particles; larger runs get fuller cells (engine.particles_per_cell).
+inline constexpr std::int64_t kMaxEngineCells = std::int64_t{1} << 28;
 // Range of the free-path histogram (collisions.max_length): at least 1e-9 σ, so that its bins
 // (max_length/length_bins) are normal non-zero numbers, at most 1e12 box lengths, so that it is
 // finite and holds the default 10 l (≤ 2.5e9 box lengths at the extreme N = 2, L/σ = 1e9).

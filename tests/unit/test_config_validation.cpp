@@ -106,15 +106,17 @@ TEST(ConfigValidation, ABoxTooElongatedForAnyDiameterNamesTheBox) {
   expect_accepted({"system.particles=2147483647", "system.box=[1e8, 1.0]", "system.area_fraction=0.5"});
 }
 
-TEST(ConfigValidation, EngineCellIdsFitIn32Bits) {
-  // N = 2^31 − 1 at one particle per cell needs 2^31 − 1 cells; half a particle per cell twice that.
-  expect_accepted({"system.particles=2147483647", "engine.particles_per_cell=1.0"});
-  expect_refused({"system.particles=2147483647", "engine.particles_per_cell=0.5"},
-                 {"engine.particles_per_cell = 0.5", "[1, 20]", "2^31 − 1 engine cells"});
+TEST(ConfigValidation, EngineCellIdsFitIn28Bits) {
+  // N = 2^29 at two particles per cell needs 2^28 cells; at 1.5 per cell more than that.
+  expect_accepted({"system.particles=536870912", "engine.particles_per_cell=2.0"});
+  expect_refused({"system.particles=536870912", "engine.particles_per_cell=1.5"},
+                 {"engine.particles_per_cell = 1.5", "[2, 20]", "2^28 engine cells"});
   expect_refused({"engine.particles_per_cell=0.09"}, {"engine.particles_per_cell", "[0.1, 20]"});
-  // A box 2.9 cells wide gets 3 columns (the minimum), so 3 × 7.4e8 rows exceed 2^31 − 1 cells.
-  expect_refused({"system.particles=2147483647", "system.box=[2.9, 740511257.6]", "system.area_fraction=0.5"},
-                 {"system.box", "engine grid of 3 × ", "2^31 − 1"});
+  // A box 2.9 cells wide gets 3 columns (the minimum): its automatic grid has taller rows to stay
+  // within 2^28 cells, where a grid given by hand is refused.
+  expect_accepted({"system.particles=2147483647", "system.box=[2.9, 740511257.6]", "system.area_fraction=0.5"});
+  expect_refused({"system.particles=2147483647", "engine.cells=[32768, 32768]"},
+                 {"system.box", "engine grid of 32768 × 32768", "2^28"});
 }
 
 TEST(ConfigValidation, RestitutionInZeroOne) {
@@ -220,7 +222,7 @@ TEST(ConfigValidation, ExtremeValidConfigurationsRoundTrip) {
        "boundary.shear_velocity=1e-20", "run.until_collisions_per_particle=0.00025"},
       {"system.box=[1e30, 1e30]", "initial.temperature=1e60", "system.particles=2", "system.area_fraction=1e-17",
        "output.snapshot_every_collisions_per_particle=0.5", "collisions.max_length=1e42"},
-      {"system.particles=2147483647", "engine.particles_per_cell=1", "run.until_time=1e-300",
+      {"system.particles=2147483647", "engine.particles_per_cell=8", "run.until_time=1e-300",
        "initial.equilibrate=2147483647e-9", "collisions.density_windows=[[0, 1e300]]"},
   };
   for (const auto& overrides : cases) {
