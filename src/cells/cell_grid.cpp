@@ -64,6 +64,10 @@ CellGridChoice choose_cell_grid(const CellGridRequest& request) {
     if (three_d) grid.nz = std::clamp(static_cast<int>(std::floor(lz / side)), kMinCells, max_nz);
     while (grid.cell_count() > request.max_cells) {
       int& most = grid.nx >= grid.ny && grid.nx >= grid.nz ? grid.nx : (grid.ny >= grid.nz ? grid.ny : grid.nz);
+      if (most == kMinCells) {
+        return {std::nullopt, "no cell grid of at least 3 cells per direction has at most " +
+                                  std::to_string(request.max_cells) + " cells"};
+      }
       const double fitting = std::floor(most * (static_cast<double>(request.max_cells) / static_cast<double>(grid.cell_count())));
       most = std::max(kMinCells, std::min(most - 1, static_cast<int>(fitting)));
     }

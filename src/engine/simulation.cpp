@@ -364,6 +364,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     record.image_velocity_x = shift.velocity_x;
     for (EventObserver<D>* observer : observers_) observer->on_collision(record);
   }
+  queue_.prefetch_removal(j);
   predict(i);
   predict(j);
   return true;
@@ -411,6 +412,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
 #endif
     const EventKind kind = slot(i).kind();
     const std::int32_t j = slot(i).partner;
+    if (kind == EventKind::kCollision) __builtin_prefetch(&slot(j));  // re-scheduled below, if valid
     bool collided = false;
     bool hit_wall = false;
     if (kind == EventKind::kCollision) {

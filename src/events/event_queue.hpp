@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,6 +47,15 @@ class EventQueue {
   }
   double top_time() const { return slot(top()).time_; }
   double time_of(std::int32_t particle) const { return slot(particle).time_; }
+  // A hint, no change of state: start fetching the first slot of the list that re-scheduling
+  // `particle` will walk (the partner of a collision leaves its list while the other's prediction
+  // runs; the walk is a chain of cache misses otherwise).
+  void prefetch_removal(std::int32_t particle) const {
+    const double time = slot(particle).time_;
+    if (time == std::numeric_limits<double>::infinity() || bucket_of(time) == bucket_) return;
+    const std::int32_t first = heads_[list_of(bucket_of(time))];
+    if (first != kEnd && first != particle) __builtin_prefetch(slots_.data() + first);
+  }
   // Every particle is where its time says and the current bucket is in heap order (the
   // GRANULE_PARANOID build checks it at every re-base).
   bool is_consistent() const;

@@ -72,15 +72,13 @@ void require_one_of(const ConfigReader& in, const std::string& count, const std:
 // The engine's cell grid must exist (choose_cell_grid explains why not) and have 28-bit cell ids.
 static_assert(kMaxEngineCells <= EventSlot::kCellLimit, "every cell id of an accepted grid fits in an event slot");
 void check_engine_grid(const RunConfig& c) {
-  const SystemParams& s = c.system;
   const CellGridChoice choice = choose_cell_grid(engine_grid_request(c));
   if (!choice.grid) throw ConfigError{choice.error};
   const std::int64_t cells = choice.grid->cell_count();
   if (cells > kMaxEngineCells) {
-    throw ConfigError{fmt::format("system.box gives an engine grid of {} × {} × {} = {} cells, more than "
-                                  "2^28: {}raise engine.particles_per_cell",
-                                  choice.grid->nx, choice.grid->ny, choice.grid->nz, cells,
-                                  s.dimension == 2 ? "set engine.cells or " : "")};
+    // Automatic grids widen their cells to stay within the limit: only a grid given by hand gets here.
+    throw ConfigError{fmt::format("engine.cells gives an engine grid of {} × {} = {} cells, more than 2^28: choose fewer",
+                                  choice.grid->nx, choice.grid->ny, cells)};
   }
 }
 

@@ -4,14 +4,15 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "cells/cell_grid.hpp"
 
 namespace granule {
 namespace {
 
-// A box 1e6 diameters long and 3.5 wide holding 10^6 disks: about 1.7 million cells at the default
-// occupancy, all in one row of columns, since the short side keeps the minimum of 3 rows.
+// A box 1e6 diameters long and 3.5 wide holding 10^6 disks: 3 rows (the minimum) of about 700,000
+// columns at the default occupancy, 2.1 million cells, where the occupancy alone asks for 1.7 million.
 CellGridRequest elongated(int dimension) {
   CellGridRequest request;
   request.length_x = 1e6;
@@ -37,11 +38,22 @@ TEST(CellGrid, AnElongatedBoxWidensItsLongCellsToStayWithinTheLimit) {
     EXPECT_LE(g.cell_count(), request.max_cells);
     // As close to the limit as whole columns allow: one column more would exceed it.
     EXPECT_GT((g.nx + 1) * static_cast<std::int64_t>(g.ny) * g.nz, request.max_cells);
+    // Only the long side's cells are widened.
     EXPECT_EQ(g.ny, unlimited.grid->ny);
     EXPECT_EQ(g.nz, unlimited.grid->nz);
-    EXPECT_DOUBLE_EQ(g.width * g.nx, request.length_x);
-    EXPECT_GE(g.width, request.diameter);
+    EXPECT_GT(g.width, unlimited.grid->width);
   }
+}
+
+TEST(CellGrid, ALimitBelowTheSmallestGridIsRefused) {
+  CellGridRequest request = elongated(2);
+  request.max_cells = 8;  // 3 × 3 cells is the smallest grid
+  const CellGridChoice choice = choose_cell_grid(request);
+  EXPECT_FALSE(choice.grid);
+  EXPECT_NE(choice.error.find("at most 8 cells"), std::string::npos) << choice.error;
+  request.max_cells = 9;
+  ASSERT_TRUE(choose_cell_grid(request).grid);
+  EXPECT_EQ(choose_cell_grid(request).grid->cell_count(), 9);
 }
 
 TEST(CellGrid, ALimitThatFitsChangesNothing) {
@@ -56,13 +68,13 @@ TEST(CellGrid, ALimitThatFitsChangesNothing) {
 }
 
 TEST(CellGrid, CellsAreNeverNarrowerThanTheLargestContactDistance) {
-  for (const double phi : {0.05, 0.3, 0.6}) {
+  for (const double phi : {0.3, 0.6}) {  // dense enough for 0.1 per cell to ask for cells below σ
     CellGridRequest request;
     request.particles = 10'000;
     request.dimension = 3;
     request.diameter = 1.0;
     request.particles_per_cell = 0.1;  // asks for cells smaller than σ: the grid must refuse to
-    const double side = std::cbrt(request.particles * (M_PI / 6.0) / phi);
+    const double side = std::cbrt(static_cast<double>(request.particles) * (M_PI / 6.0) / phi);
     request.length_x = request.length_y = request.length_z = side;
     const CellGridChoice choice = choose_cell_grid(request);
     ASSERT_TRUE(choice.grid) << choice.error;

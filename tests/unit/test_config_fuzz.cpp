@@ -21,6 +21,7 @@
 
 #include "cells/cell_grid.hpp"
 #include "io/config.hpp"
+#include "io/input_ranges.hpp"
 
 namespace granule {
 namespace {
@@ -239,10 +240,9 @@ std::string violated_invariant(const RunConfig& c) {
     if (t && !(std::isfinite(*t) && *t > 0.0)) return "a time not finite positive";
   }
   if (!finite_in(c.particles_per_cell, 0.1, 20.0)) return "particles_per_cell outside [0.1, 20]";
-  const CellGridChoice grid = choose_cell_grid(
-      {s.length_x, s.length_y, s.diameter, s.particles, c.lees_edwards, c.particles_per_cell, c.engine_cells});
+  const CellGridChoice grid = choose_cell_grid(engine_grid_request(c));
   if (!grid.grid) return "no engine grid: " + grid.error;
-  if (static_cast<std::int64_t>(grid.grid->nx) * grid.grid->ny > 2147483647) return "more than 2^31 - 1 engine cells";
+  if (grid.grid->cell_count() > kMaxEngineCells) return "more than 2^28 engine cells";
   for (const auto& [nx, ny] : {c.diagnostic_cells, c.fields.cells}) {
     if (nx < 1 || ny < 1 || nx > 16384 || ny > 16384) return "coarse-graining grid outside [1, 16384]";
   }

@@ -116,7 +116,7 @@ TEST(ConfigValidation, EngineCellIdsFitIn28Bits) {
   // within 2^28 cells, where a grid given by hand is refused.
   expect_accepted({"system.particles=2147483647", "system.box=[2.9, 740511257.6]", "system.area_fraction=0.5"});
   expect_refused({"system.particles=2147483647", "engine.cells=[32768, 32768]"},
-                 {"system.box", "engine grid of 32768 × 32768", "2^28"});
+                 {"engine.cells gives an engine grid of 32768 × 32768", "2^28", "choose fewer"});
 }
 
 TEST(ConfigValidation, RestitutionInZeroOne) {
