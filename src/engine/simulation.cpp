@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "boundary/periodic_wrap.hpp"
 #include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
 #include "physics/rough_collision_rule.hpp"
@@ -132,14 +133,6 @@ void Simulation<D>::rebase() {
   schedule_realignment();
 }
 
-namespace {
-// Into [0, L): the periodic wrap of an axis without shear (z).
-inline void wrap_periodic(double& z, double length) {
-  z -= length * std::floor(z / length);
-  if (z >= length) z = 0.0;
-}
-}  // namespace
-
 template <int D>
 void Simulation<D>::rebuild() {
   const auto n = static_cast<std::int32_t>(params_.particles);
@@ -167,77 +160,6 @@ void Simulation<D>::rebuild() {
     lists_.insert(particles_, i, slot(i).cell());
   }
   for (std::int32_t i = 0; i < n; ++i) predict(i);
-}
-
-template <int D>
-void Simulation<D>::load(const ParticleState& state) {
-  if (state.dimension != D) throw std::invalid_argument("the initial state has another dimension than the engine");
-  particles_.assign(state.size(), ParticleRecord<D>{});
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    ParticleRecord<D>& p = particles_[i];
-    for (int a = 0; a < D; ++a) {
-      p.r[a] = state.position(a)[i];
-      p.v[a] = state.velocity(a)[i];
-    }
-    p.t = t_now_;
-  }
-  diameter_ = state.diameter;
-  mass_ = state.mass;
-  if (params_.roughness.rough) {
-    if (!state.rough()) throw std::invalid_argument("rough grains need angular velocities in the initial state");
-    for (int k = 0; k < kSpinComponents; ++k) spin_[static_cast<std::size_t>(k)] = state.spin(k);
-  }
-}
-
-template <int D>
-ParticleState Simulation<D>::state() const {
-  return state(0, particles_.size());
-}
-
-template <int D>
-ParticleState Simulation<D>::state(std::size_t first, std::size_t count) const {
-  ParticleState out;
-  out.dimension = D;
-  const auto part = [&](const std::vector<double>& all) { return entries_of(all, first, count); };
-  out.diameter = part(diameter_);
-  out.mass = part(mass_);
-  for (int k = 0; k < kSpinComponents && params_.roughness.rough; ++k) out.spin(k) = part(spin_[static_cast<std::size_t>(k)]);
-  out.resize(count);
-  const double s = strain();
-  for (std::size_t i = 0; i < count; ++i) {
-    const auto id = static_cast<std::int32_t>(first + i);
-    const Vector r = position_now(id);
-    const Vector v = velocity_now(id);
-    for (int a = 0; a < D; ++a) {
-      out.position(a)[i] = r[a];
-      out.velocity(a)[i] = v[a];
-    }
-    // (x walls leave x inside the box: the frame's wrap does not move it.)
-    if (!params_.walls[1]) {
-      frame_.wrap_into_box(out.x[i], out.y[i], out.vx[i], s);
-    } else if (!params_.walls[0]) {
-      wrap_periodic(out.x[i], params_.length_x);
-    }
-    if constexpr (D == 3) {
-      if (!params_.walls[2]) wrap_periodic(out.z[i], params_.length_z);
-    }
-  }
-  return out;
-}
-
-template <int D>
-ClockState Simulation<D>::clock_state() const {
-  ClockState clock;
-  clock.time = time();
-  clock.strain_reference = t_ref_ - t_now_;
-  clock.strain_at_reference = strain_ref_;
-  clock.protocol_running = protocol_running_;
-  clock.held_shear_velocity = frame_.shear_velocity;
-  clock.collisions = collisions_;
-  clock.events = events_;
-  clock.last_collision = last_collision_;
-  for (auto& t : clock.last_collision) t -= t_now_;
-  return clock;
 }
 
 template <int D>

@@ -52,8 +52,10 @@ class EventQueue {
   // runs; the walk is a chain of cache misses otherwise).
   void prefetch_removal(std::int32_t particle) const {
     const double time = slot(particle).time_;
-    if (time == std::numeric_limits<double>::infinity() || bucket_of(time) == bucket_) return;
-    const std::int32_t first = heads_[list_of(bucket_of(time))];
+    if (time == std::numeric_limits<double>::infinity()) return;
+    const std::int64_t bucket = bucket_of(time);
+    if (bucket == bucket_) return;
+    const std::int32_t first = heads_[list_of(bucket)];
     if (first != kEnd && first != particle) __builtin_prefetch(slots_.data() + first);
   }
   // Every particle is where its time says and the current bucket is in heap order (the
