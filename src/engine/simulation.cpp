@@ -80,13 +80,20 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   shear_rate_ = frame_.shear_velocity / params.length_y;
   rebuild();
   collapse_detector_.reset(collapse_window(), t_now_);
+  renumber_interval_ = std::llround(params.renumber_every * static_cast<double>(params.particles));
+  if (renumber_interval_ > 0) {
+    user_id_.resize(particles_.size());
+    for (std::size_t i = 0; i < user_id_.size(); ++i) user_id_[i] = static_cast<std::int32_t>(i);
+    queue_.set_tie_order(user_id_);
+    renumber();
+  }
 }
 
 template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) +
-                      bytes(last_collision_) + lists_.bytes() + queue_.bytes();
+  std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(last_collision_) +
+                      bytes(user_id_) + lists_.bytes() + queue_.bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
@@ -256,8 +263,8 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   if (!observers_.empty()) {
     CollisionRecord<D> record;
     record.time = time();
-    record.first = i;
-    record.second = j;
+    record.first = user_id(i);
+    record.second = user_id(j);
     record.first_position = ri;
     const double radius = 0.5 * (diameter_.empty() ? params_.diameter : diameter_[at(i)]);
     record.contact_point = record.first_position + radius * k_hat;
@@ -298,6 +305,8 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
   while (true) {
     if (interrupt_ && *interrupt_) return StopReason::kInterrupted;
+    // Here, between events, no particle number is held anywhere but in the engine's own arrays.
+    if (renumber_interval_ > 0 && events_since_renumber_ >= renumber_interval_) renumber();
     const double t_event = queue_.top_time();
     const double t_action = actions_.earliest_time();
     // The stop is decided on the absolute clock the caller reads, time() = clock_base_ + t_now_,
@@ -329,6 +338,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     // Re-based on a count of events alone, before any early return, so that the trajectory does
     // not depend on where run() is stopped.
     const bool rebase_due = ++events_since_rebase_ >= rebase_interval;
+    ++events_since_renumber_;
 #ifdef GRANULE_PARANOID
     check_popped_event(i);
 #endif
@@ -362,7 +372,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     if (collided || hit_wall) {
       if (collapse_detector_.on_collision(t_now_)) {
         const Vector where = position_now(i);
-        collapse_ = {time(), i, collided ? j : -1, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};
+        collapse_ = {time(), user_id(i), collided ? user_id(j) : -1, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};
         return StopReason::kInelasticCollapse;
       }
       if (collided && collisions_ >= until_collisions) return StopReason::kCollisionsReached;

@@ -87,16 +87,13 @@ class Simulation {
   // extrapolated from each particle's last event without touching the engine; with the
   // per-particle diameters and masses of a polydisperse run.
   ParticleState state() const;
-  // Particles first .. first + count - 1 of state() (a large state written block by block).
-  ParticleState state(std::size_t first, std::size_t count) const;
-  // state() in blocks, each extrapolated when it is read: valid while the engine stands still.
-  StateBlocks state_blocks() const {
-    return StateBlocks(particles_.size(), [this](std::size_t first, std::size_t count) { return state(first, count); });
-  }
+  // state() in blocks of consecutive ids, each extrapolated when it is read: valid while the
+  // engine stands still.
+  StateBlocks state_blocks() const;
   ClockState clock_state() const;
-  // Per-particle diameters and masses of a polydisperse run (empty otherwise).
-  const std::vector<double>& diameters() const { return diameter_; }
-  const std::vector<double>& masses() const { return mass_; }
+  // Per-particle diameters and masses of a polydisperse run (empty otherwise), by particle id.
+  std::vector<double> diameters() const { return by_user_id(diameter_); }
+  std::vector<double> masses() const { return by_user_id(mass_); }
 
   // Switch on the restitutions of `production` (normal, tangential, walls: the thesis's elastic
   // pre-run ends here), restart t and c at 0 and start the shear protocol: from here on U follows
@@ -136,6 +133,9 @@ class Simulation {
   const CollapseReport& collapse() const { return collapse_; }
   // Memory held per particle by the engine (all arrays, cells and queue), in bytes.
   double bytes_per_particle() const;
+  // The number of times the particles have been renumbered in this engine's life (restored ones
+  // count from the restore).
+  std::int64_t renumberings() const { return renumberings_; }
 
  private:
   // The arrays and clocks a checkpoint holds by name (simulation_checkpoint.cpp); the event kinds,
@@ -150,6 +150,22 @@ class Simulation {
   }
   void load(const ParticleState& state);
   void rebuild();
+  // Particles are numbered inside the engine along the cell curve (cells/cell_curve.hpp), afresh
+  // every SystemParams::renumber_every events per particle, so that the records a prediction
+  // reads lie close in memory; everything handed out (states, records, reports) is by the user's
+  // id, which the engine keeps (user_id_).  Renumbering moves every per-particle array and slot
+  // and re-links the cell lists and the calendar; the trajectory does not change (the queue
+  // breaks ties by user id; tests/validation/test_renumbering.cpp).
+  void renumber();
+  // The numbering a checkpoint holds (the user's when it holds none), and the cadence.
+  void restore_numbering(const StateArchive& archive, const std::string& prefix);
+  std::int32_t user_id(std::int32_t i) const { return user_id_.empty() ? i : user_id_[static_cast<std::size_t>(i)]; }
+  // The engine's number of each user id (the inverse of user_id_), empty while they agree.
+  std::vector<std::int32_t> engine_ids() const;
+  // A per-particle array of the engine's, in the order of user ids.
+  std::vector<double> by_user_id(const std::vector<double>& values) const;
+  // Particles first .. first + count − 1 by user id, with `engine_ids` from engine_ids().
+  ParticleState state(std::size_t first, std::size_t count, const std::vector<std::int32_t>& engine_ids) const;
   std::int64_t collapse_window() const { return std::max<std::int64_t>(1000, params_.particles); }
   void rebase();
   EventSlot& slot(std::int32_t i) { return queue_.slot(i); }
@@ -343,6 +359,11 @@ class Simulation {
   Vector gravity_;
   bool has_gravity_ = false;
   std::vector<double> last_collision_;  // TC model only
+  // The user's id of each engine particle (empty: the same), and the renumbering's cadence.
+  std::vector<std::int32_t> user_id_;
+  std::int64_t renumber_interval_ = 0;  // events (0: never)
+  std::int64_t events_since_renumber_ = 0;
+  std::int64_t renumberings_ = 0;
 
   CellLists lists_;
   EventQueue queue_;

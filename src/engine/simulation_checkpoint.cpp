@@ -1,6 +1,7 @@
 // Checkpoints of the engine: everything that decides its future — positions at local times,
-// pending events, cell-list order (it breaks ties between equal collision times), clocks, TC history, the collapse
+// pending events, the engine's numbering of the particles, cell-list order (it breaks ties between equal collision times), clocks, TC history, the collapse
 // detector — so that a run restored from one continues bit for bit (tests/validation).
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string_view>
@@ -209,6 +210,12 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   });
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
+  // The engine's numbering (absent while it is the user's: checkpoints of runs that never
+  // renumber keep the content they had before).
+  if (!user_id_.empty()) {
+    archive.put_view(prefix + "particle_id", user_id_);
+    archive.put_integer(prefix + "events_since_renumber", events_since_renumber_);
+  }
   lists_.save(archive, prefix + "cell_list_");
   queue_.save(archive, prefix + "queue_");
   collapse_detector_.save(archive, prefix + "collapse_");
@@ -276,6 +283,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     slots[i].set_kind(static_cast<EventKind>(kinds[i]));
   }
   lists_.restore(archive, prefix + "cell_list_", grid.cell_count(), particles_);
+  restore_numbering(archive, prefix);
   queue_.restore(archive, prefix + "queue_");
   collapse_detector_.restore(archive, prefix + "collapse_");
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.
@@ -286,11 +294,33 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   }
 }
 
+template <int D>
+void Simulation<D>::restore_numbering(const StateArchive& archive, const std::string& prefix) {
+  const auto n = static_cast<std::size_t>(params_.particles);
+  renumber_interval_ = std::llround(params_.renumber_every * static_cast<double>(params_.particles));
+  if (archive.contains(prefix + "particle_id")) {
+    user_id_ = array_of_size<std::int32_t>(archive, prefix + "particle_id", n);
+    std::vector<char> seen(n, 0);
+    for (const std::int32_t id : user_id_) {
+      if (id < 0 || static_cast<std::size_t>(id) >= n || seen[static_cast<std::size_t>(id)]++ != 0) {
+        throw std::runtime_error("checkpoint entry particle_id is not a numbering of the particles");
+      }
+    }
+    events_since_renumber_ = archive.integer(prefix + "events_since_renumber");
+  } else if (renumber_interval_ > 0) {
+    user_id_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) user_id_[i] = static_cast<std::int32_t>(i);
+  }
+  queue_.set_tie_order(user_id_);
+}
+
 // The members defined in this file, for both dimensions (the class is instantiated in
 // simulation.cpp, once).
 template void Simulation<2>::save(StateArchive&, const std::string&) const;
+template void Simulation<2>::restore_numbering(const StateArchive&, const std::string&);
 template Simulation<2>::Simulation(const SystemParams&, const CellGrid&, const StateArchive&, const std::string&);
 template void Simulation<3>::save(StateArchive&, const std::string&) const;
+template void Simulation<3>::restore_numbering(const StateArchive&, const std::string&);
 template Simulation<3>::Simulation(const SystemParams&, const CellGrid&, const StateArchive&, const std::string&);
 
 }  // namespace granule

@@ -101,7 +101,7 @@ void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
   if (!observers_.empty()) {
     WallCollisionRecord<D> record;
     record.time = time();
-    record.particle = i;
+    record.particle = user_id(i);
     record.axis = axis;
     record.side = face % 2;
     record.position = position_now(i);

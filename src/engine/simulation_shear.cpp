@@ -118,7 +118,7 @@ void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
   p.r[1] += shift.position.y;
   p.v[0] += shift.velocity_x;
   if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), i, -image_y, vx_before, p.v[0]};
+  const BoundaryCrossingRecord record{time(), user_id(i), -image_y, vx_before, p.v[0]};
   for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
 

@@ -1,5 +1,7 @@
 // The engine's particles in and out: the initial state loaded, and the state and clock read at
-// the current time (extrapolated from each particle's last event, wrapped into the box).
+// the current time (extrapolated from each particle's last event, wrapped into the box), by the
+// user's ids, whatever the engine's numbering.
+#include <memory>
 #include <stdexcept>
 
 #include "boundary/periodic_wrap.hpp"
@@ -29,21 +31,39 @@ void Simulation<D>::load(const ParticleState& state) {
 
 template <int D>
 ParticleState Simulation<D>::state() const {
-  return state(0, particles_.size());
+  return state(0, particles_.size(), engine_ids());
 }
 
 template <int D>
-ParticleState Simulation<D>::state(std::size_t first, std::size_t count) const {
+StateBlocks Simulation<D>::state_blocks() const {
+  // The inverse numbering is made once for all the blocks (4 bytes per particle while they are read).
+  auto engine_id = std::make_shared<const std::vector<std::int32_t>>(engine_ids());
+  return StateBlocks(particles_.size(), [this, engine_id](std::size_t first, std::size_t count) {
+    return state(first, count, *engine_id);
+  });
+}
+
+template <int D>
+ParticleState Simulation<D>::state(std::size_t first, std::size_t count, const std::vector<std::int32_t>& engine_id) const {
+  const auto id_of = [&](std::size_t user) {
+    return engine_id.empty() ? static_cast<std::int32_t>(user) : engine_id[user];
+  };
   ParticleState out;
   out.dimension = D;
-  const auto part = [&](const std::vector<double>& all) { return entries_of(all, first, count); };
+  const auto part = [&](const std::vector<double>& all) {
+    std::vector<double> values;
+    if (all.empty()) return values;
+    values.resize(count);
+    for (std::size_t k = 0; k < count; ++k) values[k] = all[static_cast<std::size_t>(id_of(first + k))];
+    return values;
+  };
   out.diameter = part(diameter_);
   out.mass = part(mass_);
   for (int k = 0; k < kSpinComponents && params_.roughness.rough; ++k) out.spin(k) = part(spin_[static_cast<std::size_t>(k)]);
   out.resize(count);
   const double s = strain();
   for (std::size_t i = 0; i < count; ++i) {
-    const auto id = static_cast<std::int32_t>(first + i);
+    const std::int32_t id = id_of(first + i);
     const Vector r = position_now(id);
     const Vector v = velocity_now(id);
     for (int a = 0; a < D; ++a) {
@@ -73,7 +93,7 @@ ClockState Simulation<D>::clock_state() const {
   clock.held_shear_velocity = frame_.shear_velocity;
   clock.collisions = collisions_;
   clock.events = events_;
-  clock.last_collision = last_collision_;
+  clock.last_collision = by_user_id(last_collision_);
   for (auto& t : clock.last_collision) t -= t_now_;
   return clock;
 }
@@ -82,11 +102,13 @@ ClockState Simulation<D>::clock_state() const {
 // simulation.cpp, once).
 template void Simulation<2>::load(const ParticleState&);
 template ParticleState Simulation<2>::state() const;
-template ParticleState Simulation<2>::state(std::size_t, std::size_t) const;
+template StateBlocks Simulation<2>::state_blocks() const;
+template ParticleState Simulation<2>::state(std::size_t, std::size_t, const std::vector<std::int32_t>&) const;
 template ClockState Simulation<2>::clock_state() const;
 template void Simulation<3>::load(const ParticleState&);
 template ParticleState Simulation<3>::state() const;
-template ParticleState Simulation<3>::state(std::size_t, std::size_t) const;
+template StateBlocks Simulation<3>::state_blocks() const;
+template ParticleState Simulation<3>::state(std::size_t, std::size_t, const std::vector<std::int32_t>&) const;
 template ClockState Simulation<3>::clock_state() const;
 
 }  // namespace granule

@@ -33,6 +33,9 @@ struct RoughnessParams {
   double friction = std::numeric_limits<double>::infinity();  // μ ≥ 0; +inf: no Coulomb limit
 };
 
+// Measured with granule bench (docs/performance.md, "Particles renumbered along the cells").
+inline constexpr double kDefaultRenumberEvery = 4.0;
+
 struct SystemParams {
   std::int64_t particles = 0;
   // σ of a monodisperse system; the largest diameter of a polydisperse one (whose own diameters
@@ -56,6 +59,9 @@ struct SystemParams {
   std::array<WallParams, 6> wall;  // per face 2·axis + side (0: at 0, 1: at L)
   std::array<double, 3> gravity{};  // uniform acceleration g (parabolic flights)
   RoughnessParams roughness;
+  // Events per particle between renumberings of the engine's particles along its cells (0: never;
+  // Simulation::renumber).  A matter of speed only: the trajectory is the same for any value.
+  double renumber_every = kDefaultRenumberEvery;
 
   bool has_walls() const { return walls[0] || walls[1] || walls[2]; }
   bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }

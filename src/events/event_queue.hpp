@@ -10,8 +10,10 @@
 // without its 4 bytes.  Where a particle is (no event, the current bucket, a bucket list) follows
 // from its time and the current bucket.
 //
-// Ties are broken by the particle id, so the order of pops is a function of the times alone: not
-// of the bucket width, of the calendar's layout or of the order of the updates.  The width is
+// Ties are broken by the particle's user id (set_tie_order: the engine renumbers its particles
+// along the cells, and the order of pops must not follow), so the order of pops is a function of
+// the times and those ids alone: not of the bucket width, of the calendar's layout, of the order
+// of the updates or of the engine's numbering.  The width is
 // therefore re-tuned freely (at every re-base, and when the current bucket grows too full), and a
 // checkpoint holds only the times.
 #pragma once
@@ -39,8 +41,14 @@ class EventQueue {
   std::span<const EventSlot> slots() const { return slots_; }
   // Set a particle's event time (any non-NaN double; +inf: nothing pending).
   void update(std::int32_t particle, double time);
-  // The particle whose event comes first (the lowest id of a tie; particle 0 when every time is
-  // +inf), and its time.
+  // The ids that order equal times, one per particle, owned by the caller and kept alive and in
+  // place while the queue is used (empty: the particle's own number).
+  void set_tie_order(std::span<const std::int32_t> ids) { tie_order_ = ids; }
+  // After the caller moved whole slots between particles (EventQueue::slots()), with their times:
+  // the calendar is laid out afresh from the times.
+  void relink() { rebuild(); }
+  // The particle whose event comes first (the one with the lowest tie id of a tie; particle 0
+  // when every time is +inf), and its time.
   std::int32_t top() const {
     settle();
     return current_.empty() ? 0 : current_.front();
@@ -79,7 +87,10 @@ class EventQueue {
   bool earlier(std::int32_t a, std::int32_t b) const {
     const double ta = slot(a).time_;
     const double tb = slot(b).time_;
-    return ta < tb || (ta == tb && a < b);
+    return ta < tb || (ta == tb && tie_id(a) < tie_id(b));
+  }
+  std::int32_t tie_id(std::int32_t particle) const {
+    return tie_order_.empty() ? particle : tie_order_[static_cast<std::size_t>(particle)];
   }
   void insert(std::int32_t particle) const;
   void remove(std::int32_t particle) const;
@@ -111,6 +122,7 @@ class EventQueue {
   mutable double buckets_per_time_ = 1.0;
   mutable std::int64_t listed_ = 0;             // events in bucket lists
   mutable std::size_t crowded_ = 0;             // current_'s size that asks for a new width
+  std::span<const std::int32_t> tie_order_;
 };
 
 }  // namespace granule
