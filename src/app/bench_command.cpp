@@ -50,6 +50,7 @@ struct BenchOptions {
   std::string dimensions = "both";
   double collisions_per_particle = 20.0;
   std::optional<double> particles_per_cell;  // default: that of runs
+  double renumber_every = kDefaultRenumberEvery;
   std::uint64_t seed = 7;
   bool observers = false;
   std::vector<std::string> only;  // run only the workloads whose names contain one of these
@@ -72,8 +73,9 @@ enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePath
 // (3.1); in 3D from the dilute balance of viscous heating η γ² (η = 5/(16σ²)√(T/π)) and collisional
 // cooling n ω (1 − e²) T/2 (ω the Enskog collision frequency), good to a factor of order one —
 // so that the run compares per collision with the periodic workloads at the same temperature.
-SystemParams workload_system(const Workload& w, int dimension, std::int64_t particles) {
+SystemParams workload_system(const Workload& w, int dimension, std::int64_t particles, double renumber_every) {
   SystemParams p;
+  p.renumber_every = renumber_every;
   p.dimension = dimension;
   p.particles = particles;
   p.length_x = p.length_y = p.length_z = 1.0;
@@ -120,7 +122,7 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
 template <int D>
 void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
   if (!selected(w, o)) return;
-  const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d);
+  const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d, o.renumber_every);
   constexpr double temperature = 1.0;
   CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards,
                           o.particles_per_cell.value_or(kDefaultParticlesPerCell), std::nullopt};
@@ -187,6 +189,11 @@ void add_bench_command(CLI::App& root) {
   command->add_option("--particles-per-cell", options->particles_per_cell,
                       "Target cell occupancy of the engine grid (default: that of runs, 0.6)")
       ->check(CLI::Range(0.1, 20.0));
+  command->add_option("--renumber-every", options->renumber_every,
+                      "Events per particle between renumberings of the engine's particles along its cells (0: never; "
+                      "default: that of runs)")
+      ->default_val(kDefaultRenumberEvery)
+      ->check(CLI::Range(0.0, 1e6));
   command->add_option("--seed", options->seed, "Seed of the initial states")->default_val(7);
   command->add_option("--only", options->only,
                       "Run only the workloads whose names contain one of these texts (e.g. --only \"elastic, nu\")");

@@ -47,34 +47,34 @@ void Simulation<D>::check_invariants() const {
   const double s = strain();
   const double cell_tolerance = kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth});
   for (std::int32_t i = 0; i < n; ++i) {
-    if (!seen[at(i)]) fail("particle ", i, " is in no cell list");
+    if (!seen[at(i)]) fail("particle ", user_id(i), " is in no cell list");
     const Vector r = position_now(i);
     bool finite = t_now_ >= particles_[at(i)].t;
     for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(particles_[at(i)].v[a]);
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
-    if (!finite) fail("particle ", i, " has a non-finite state or a local time after the clock");
+    if (!finite) fail("particle ", user_id(i), " has a non-finite state or a local time after the clock");
     for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
       if (!params_.walls[static_cast<std::size_t>(a)]) continue;
       const double inside = radius_of(i) - kDistanceTolerance * box_length(a);
-      if (r[a] < inside || r[a] > box_length(a) - inside) fail("particle ", i, " is in a wall along axis ", a, " at ", r[a]);
+      if (r[a] < inside || r[a] > box_length(a) - inside) fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
     }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(slot(i).cell());
     for (int a = 0; a < D; ++a) {
       const double coordinate = a == 0 ? frame_.sheared_x(r[0], r[1], s) : r[a];
       if (coordinate < cell[a] * grid_.size(a) - cell_tolerance || coordinate > (cell[a] + 1) * grid_.size(a) + cell_tolerance) {
-        fail("particle ", i, " is outside its cell along axis ", a, " (coordinate ", coordinate, ", cell ", cell[a], ")");
+        fail("particle ", user_id(i), " is outside its cell along axis ", a, " (coordinate ", coordinate, ", cell ", cell[a], ")");
       }
     }
     for_each_neighbour(i, [&](std::int32_t j, const Vector& shift, double) {
       const double distance = norm(position_now(j) + shift - r);
       const double sigma = contact_distance(i, j);
-      if (distance < sigma * (1.0 - kDistanceTolerance)) fail("particles ", i, " and ", j, " overlap: distance ", distance / sigma, " σ_ij");
+      if (distance < sigma * (1.0 - kDistanceTolerance)) fail("particles ", user_id(i), " and ", user_id(j), " overlap: distance ", distance / sigma, " σ_ij");
     });
     // One event per particle (Smallenburg 2022): a particle's slot is never later than its true
     // next event, unless the partner of that event holds it in its own slot.
     const double stored = queue_.time_of(i);
-    if (stored < t_now_) fail("particle ", i, " has an event in the past");
+    if (stored < t_now_) fail("particle ", user_id(i), " has an event in the past");
     const Prediction fresh = next_event(i);
     const EventKind kind = fresh.kind();
     if (kind == EventKind::kNone) continue;
@@ -96,7 +96,7 @@ void Simulation<D>::check_invariants() const {
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance) + slack;
     const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
     if (!held) {
-      fail("particle ", i, " has its next event (", static_cast<int>(kind), " with ", fresh.partner, ") at t = ",
+      fail("particle ", user_id(i), " has its next event (", static_cast<int>(kind), " with ", fresh.partner < 0 ? -1 : user_id(fresh.partner), ") at t = ",
            t_now_ + fresh.delay(), " but its slot says ", stored, " (approach cosine ", cosine, ")");
     }
   }
@@ -113,7 +113,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     const double distance = norm(offset + nearest_image(offset).shift.position);
     const double sigma = contact_distance(i, j);
     if (distance > sigma * (1.0 + kDistanceTolerance)) {
-      fail("collision of particles ", i, " and ", j, " popped at distance ", distance / sigma, " σ_ij");
+      fail("collision of particles ", user_id(i), " and ", user_id(j), " popped at distance ", distance / sigma, " σ_ij");
     }
     return;
   }
@@ -123,7 +123,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     const int axis = face / 2;
     const double wall = face % 2 == 0 ? 0.0 : box_length(axis);
     if (std::abs(std::abs(r[axis] - wall) - radius_of(i)) > kDistanceTolerance * box_length(axis)) {
-      fail("wall hit of particle ", i, " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
+      fail("wall hit of particle ", user_id(i), " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
     }
     return;
   }
@@ -133,7 +133,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   const int cell = cell_coordinates(slot(i).cell())[static_cast<std::size_t>(axis)];
   const double face = (cell + (crossing_direction(kind) > 0 ? 1 : 0)) * grid_.size(axis);
   if (std::abs(face - coordinate) > kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth})) {
-    fail("crossing of particle ", i, " popped ", face - coordinate, " away from its face");
+    fail("crossing of particle ", user_id(i), " popped ", face - coordinate, " away from its face");
   }
 }
 

@@ -38,7 +38,7 @@ const ConfigSchema& schema() {
       {"output",
        {"every_collisions_per_particle", "every_time", "snapshot_every_collisions_per_particle",
         "snapshot_every_time", "checkpoint_every_seconds"}},
-      {"engine", {"particles_per_cell", "cells"}},
+      {"engine", {"particles_per_cell", "cells", "renumber_every"}},
       {"diagnostics", {"cells"}},
       {"fields", {"enabled", "cells", "every_collisions_per_particle", "every_time", "subtract_shear_profile"}},
       {"collisions",
@@ -143,6 +143,10 @@ RunConfig resolve(const toml::table& root) {
     }
   }
   c.engine_cells = in.int_pair("engine.cells", 3, 1 << 15);
+  // A matter of speed only (the trajectory is the same for any value): no upper limit is needed
+  // but a run's length, and one beyond 10⁶ events per particle is never.
+  s.renumber_every = in.number("engine.renumber_every", NumberRange{0.0, 1e6}, " events per particle (0: never)")
+                         .value_or(kDefaultRenumberEvery);
   check_engine_grid(c);
   const auto diag = in.int_pair("diagnostics.cells", 1, 1 << 14);
   if (diag) {

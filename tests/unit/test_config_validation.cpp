@@ -44,6 +44,7 @@ const std::vector<std::vector<std::string>> kNumericKeys = {
     {"output.snapshot_every_collisions_per_particle"},
     {"output.snapshot_every_time"},
     {"engine.particles_per_cell"},
+    {"engine.renumber_every"},
     {"fields.every_collisions_per_particle"},
     {"fields.every_time"},
     {"collisions.window_collisions_per_particle"},
@@ -104,6 +105,13 @@ TEST(ConfigValidation, ABoxTooElongatedForAnyDiameterNamesTheBox) {
   // At aspect 1e8 the default ν = 0.05 would put 1.7e9 diameters along the box; 0.5 does not.
   expect_refused({"system.particles=2147483647", "system.box=[1e8, 1.0]"}, {"system.area_fraction = 0.05 (the default)"});
   expect_accepted({"system.particles=2147483647", "system.box=[1e8, 1.0]", "system.area_fraction=0.5"});
+}
+
+TEST(ConfigValidation, RenumberingCadenceIsNonNegative) {
+  expect_accepted({"engine.renumber_every=0"});
+  expect_accepted({"engine.renumber_every=2.5"});
+  expect_refused({"engine.renumber_every=-1"}, {"engine.renumber_every = -1", "[0, 1000000]", "events per particle"});
+  expect_refused({"engine.renumber_every=2e6"}, {"engine.renumber_every", "[0, 1000000]"});
 }
 
 TEST(ConfigValidation, EngineCellIdsFitIn28Bits) {
