@@ -162,7 +162,11 @@ void Simulation<D>::rebuild() {
   }
   lists_.reset(grid_.cell_count());
   queue_.reset(n);
-  for (std::int32_t i = 0; i < n; ++i) {
+  // Filled in the order of user ids: the order within a list decides ties between candidates, and
+  // must not follow the engine's numbering.
+  const std::vector<std::int32_t> engine_id = engine_ids();
+  for (std::int32_t user = 0; user < n; ++user) {
+    const std::int32_t i = engine_id.empty() ? user : engine_id[at(user)];
     slot(i).set_cell(cell_of(position_now(i)));
     lists_.insert(particles_, i, slot(i).cell());
   }

@@ -73,6 +73,12 @@ class Simulation {
   // archive does not fit `params` and `grid`.
   Simulation(const SystemParams& params, const CellGrid& grid, const StateArchive& archive,
              const std::string& prefix);
+  // Moved, never copied: the queue orders ties by the engine's own array of user ids, which a
+  // move carries along and a copy would leave behind.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+  Simulation(Simulation&&) noexcept = default;
+  Simulation& operator=(Simulation&&) noexcept = default;
   void save(StateArchive& archive, const std::string& prefix) const;
 
   // Advance until the absolute time `until_time` or until `until_collisions` collisions have
@@ -359,7 +365,8 @@ class Simulation {
   Vector gravity_;
   bool has_gravity_ = false;
   std::vector<double> last_collision_;  // TC model only
-  // The user's id of each engine particle (empty: the same), and the renumbering's cadence.
+  // The user's id of each engine particle (empty: the same), and the renumbering's cadence.  The
+  // queue reads it in place (set_tie_order): it is sized once, at construction or restore.
   std::vector<std::int32_t> user_id_;
   std::int64_t renumber_interval_ = 0;  // events (0: never)
   std::int64_t events_since_renumber_ = 0;

@@ -40,7 +40,7 @@ void Simulation<D>::check_invariants() const {
     const auto cell = static_cast<std::int32_t>(c);
     for (std::int32_t j = lists_.first(cell); j != CellLists::kEnd; j = particles_[at(j)].next) {
       if (j < 0 || j >= n || ++steps > n || seen[at(j)]++ || slot(j).cell() != cell) {
-        fail("cell list ", c, " is corrupt at particle ", j);
+        fail("cell list ", c, " is corrupt at particle ", j >= 0 && j < n ? user_id(j) : j, j >= 0 && j < n ? "" : " (an engine index)");
       }
     }
   }
