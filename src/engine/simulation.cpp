@@ -82,8 +82,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   collapse_detector_.reset(collapse_window(), t_now_);
   renumber_interval_ = std::llround(params.renumber_every * static_cast<double>(params.particles));
   if (renumber_interval_ > 0) {
-    user_id_.resize(particles_.size());
-    for (std::size_t i = 0; i < user_id_.size(); ++i) user_id_[i] = static_cast<std::int32_t>(i);
+    number_by_user_id();
     queue_.set_tie_order(user_id_);
     renumber();
   }

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -165,6 +166,11 @@ class Simulation {
   void renumber();
   // The numbering a checkpoint holds (the user's when it holds none), and the cadence.
   void restore_numbering(const StateArchive& archive, const std::string& prefix);
+  // Engine numbers equal to the user's ids, stored (the start of a renumbering engine).
+  void number_by_user_id() {
+    user_id_.resize(particles_.size());
+    std::iota(user_id_.begin(), user_id_.end(), 0);
+  }
   std::int32_t user_id(std::int32_t i) const { return user_id_.empty() ? i : user_id_[static_cast<std::size_t>(i)]; }
   // The engine's number of each user id (the inverse of user_id_), empty while they agree.
   std::vector<std::int32_t> engine_ids() const;

@@ -308,8 +308,7 @@ void Simulation<D>::restore_numbering(const StateArchive& archive, const std::st
     }
     events_since_renumber_ = archive.integer(prefix + "events_since_renumber");
   } else if (renumber_interval_ > 0) {
-    user_id_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) user_id_[i] = static_cast<std::int32_t>(i);
+    number_by_user_id();
   }
   queue_.set_tie_order(user_id_);
 }
