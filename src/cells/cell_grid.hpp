@@ -5,6 +5,7 @@
 // arithmetic is 64-bit.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -91,6 +92,13 @@ class CellLists {
     *link = records[static_cast<std::size_t>(particle)].next;
   }
   std::int32_t first(std::int32_t cell) const { return head_[static_cast<std::size_t>(cell)]; }
+  // A hint: start fetching the heads of cells first .. first + count - 1, clipped to the grid
+  // (forced inline: GCC drops the call of a function that only prefetches).
+  [[gnu::always_inline]] void prefetch_heads(std::int64_t first, std::int64_t count) const {
+    const std::int64_t last = static_cast<std::int64_t>(head_.size()) - 1;
+    __builtin_prefetch(head_.data() + std::clamp<std::int64_t>(first, 0, last));
+    __builtin_prefetch(head_.data() + std::clamp<std::int64_t>(first + count - 1, 0, last));
+  }
   std::size_t bytes() const { return head_.capacity() * sizeof(std::int32_t); }
   // The order within each list decides the order of candidate partners, hence ties: a
   // checkpoint keeps it exactly (the links with the records, the heads here).

@@ -336,6 +336,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       return StopReason::kTimeReached;
     }
     const std::int32_t i = queue_.top();
+    prefetch_next_event();
     t_now_ = t_event;
     ++events_;
     // Re-based on a count of events alone, before any early return, so that the trajectory does

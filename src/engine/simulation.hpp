@@ -183,6 +183,9 @@ class Simulation {
   EventSlot& slot(std::int32_t i) { return queue_.slot(i); }
   const EventSlot& slot(std::int32_t i) const { return queue_.slot(i); }
   void advance(std::int32_t i);
+  // Start fetching what the event after the top will read (its record, its partner's, the cell
+  // heads of its block), so that its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
+  void prefetch_next_event() const;
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
   // Particle i leaves the box through the top (image_y = −1: it comes in from the image below) or

@@ -66,6 +66,14 @@ class EventQueue {
     const std::int32_t first = heads_[list_of(bucket)];
     if (first != kEnd && first != particle) __builtin_prefetch(slots_.data() + first);
   }
+  // A hint for the caller's prefetches: the particle whose event likely comes after the top's
+  // (the earlier child of the current bucket's root; -1 when the current bucket holds only the
+  // top, whose successor is then in a list not yet read).
+  std::int32_t runner_up() const {
+    if (current_.size() < 2) return -1;
+    if (current_.size() == 2 || earlier(current_[1], current_[2])) return current_[1];
+    return current_[2];
+  }
   // Every particle is where its time says and the current bucket is in heap order (the
   // GRANULE_PARANOID build checks it at every re-base).
   bool is_consistent() const;
