@@ -97,15 +97,30 @@ std::string describe(hid_t object) {
 
 // File access with the "semi" close degree: closing a file with objects still open fails instead of
 // leaving it open (and unflushed) behind a successful close, so a published file is a closed one.
-Handle access_properties(const std::string& path) {
+// A file opened for writing also keeps its changed metadata in memory until the next flush: by
+// default HDF5 evicts metadata whenever its cache is full, so a file killed between two flushes
+// (SIGKILL after a frame) could hold a chunk index that points past the end the file's superblock
+// records, and a resumed run failed on it ("addr overflow").  Without evictions the file on disk
+// is the one of the last flush, plus raw data in space that nothing on disk refers to yet.
+Handle access_properties(const std::string& path, bool writing) {
   Handle properties = owned(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, H5I_INVALID_HID, "create access properties of", path.c_str());
   check(H5Pset_fclose_degree(properties.get(), H5F_CLOSE_SEMI), H5I_INVALID_HID, "set the access properties of", path.c_str());
+  if (writing) {
+    H5AC_cache_config_t cache{};
+    cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+    check(H5Pget_mdc_config(properties.get(), &cache), H5I_INVALID_HID, "read the metadata cache settings of", path.c_str());
+    cache.evictions_enabled = false;  // HDF5 allows it only with the automatic resizing off
+    cache.incr_mode = H5C_incr__off;
+    cache.flash_incr_mode = H5C_flash_incr__off;
+    cache.decr_mode = H5C_decr__off;
+    check(H5Pset_mdc_config(properties.get(), &cache), H5I_INVALID_HID, "set the metadata cache of", path.c_str());
+  }
   return properties;
 }
 
 hid_t open_existing(const std::string& path, unsigned flags) {
   silence_hdf5_errors();
-  Handle properties = access_properties(path);
+  Handle properties = access_properties(path, flags == H5F_ACC_RDWR);
   const hid_t file = H5Fopen(path.c_str(), flags, properties.get());
   if (file < 0) fail_path("open", path);
   return file;
@@ -234,7 +249,7 @@ hid_t create_partial_file(const std::string& path, const char* format, int forma
   silence_hdf5_errors();
   const std::string partial = path + ".partial";
   Handle creation = untimed_creation_properties(H5P_FILE_CREATE, H5I_INVALID_HID, partial.c_str());
-  Handle access = access_properties(partial);
+  Handle access = access_properties(partial, true);
   const hid_t id = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   if (id < 0) fail_path("create", partial);
   Handle file(id, H5Fclose);
@@ -377,6 +392,10 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
     throw io_error("cannot rename " + path + " to " + partial, errno);
   }
   file_ = Handle(open_existing(partial, H5F_ACC_RDWR), H5Fclose);
+  // A run killed while it flushed may have written chunk indices (and the chunks) before the
+  // superblock that records the file's end: the end moves to the bytes on disk, so that no chunk
+  // lies past it (HDF5 refused them: "addr overflow").
+  check(H5Fincrement_filesize(file_.get(), 0), file_.get(), "extend to its bytes on disk", partial.c_str());
   for (const std::string& name : frame_datasets(file_.get())) {
     Handle dataset = open_dataset(file_.get(), name.c_str());
     std::vector<hsize_t> dims = extent(dataset.get(), name.c_str());
