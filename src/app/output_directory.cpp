@@ -9,6 +9,7 @@
 
 #include "app/exit_codes.hpp"
 #include "io/io_error.hpp"
+#include "io/journaled_file_driver.hpp"
 
 namespace granule::app {
 
@@ -26,7 +27,7 @@ const std::vector<std::string>& run_output_names() {
 
 void remove_outputs(const std::string& out, const std::vector<std::string>& names) {
   for (const std::string& name : names) {
-    for (const char* suffix : {"", ".partial", ".tmp"}) {
+    for (const char* suffix : {"", ".partial", ".tmp", ".partial.journal", ".partial.journal.tmp"}) {
       std::error_code error;
       fs::remove(fs::path(out) / (name + suffix), error);
       if (error) throw IoError(fmt::format("cannot remove {}/{}{}: {}", out, name, suffix, error.message()));
@@ -92,6 +93,8 @@ std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
   fs::create_directory(aside, error);
   if (error) throw IoError(fmt::format("cannot create {}: {}", aside.string(), error.message()));
   for (const std::string& name : run_output_names()) {
+    // A killed run's last flush first (io/journaled_file_driver.hpp): the journal stays behind.
+    if (fs::exists(fs::path(out) / (name + ".partial"))) h5::replay_journal((fs::path(out) / (name + ".partial")).string());
     for (const char* suffix : {"", ".partial"}) {
       const fs::path from = fs::path(out) / (name + suffix);
       if (!fs::exists(from)) continue;

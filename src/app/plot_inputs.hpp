@@ -52,12 +52,14 @@ int run_program(const std::vector<std::string>& argv);
 bool program_in_path(const std::string& name);
 
 // A temporary file or folder (a `.partial` output, scratch frames), removed whatever happens once
-// the command ends; a published output no longer exists under this name, so nothing is lost.
+// the command ends, with the journal of a flush HDF5 did not finish (io/journaled_file_driver.hpp);
+// a published output no longer exists under this name, so nothing is lost.
 struct RemovedAtExit {
   std::filesystem::path path;
   ~RemovedAtExit() {
     std::error_code ignored;
     std::filesystem::remove_all(path, ignored);
+    for (const char* journal : {".journal", ".journal.tmp"}) std::filesystem::remove(path.string() + journal, ignored);
   }
 };
 

@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
+#include "io/journaled_file_driver.hpp"
 
 namespace granule::h5 {
 
@@ -97,23 +98,15 @@ std::string describe(hid_t object) {
 
 // File access with the "semi" close degree: closing a file with objects still open fails instead of
 // leaving it open (and unflushed) behind a successful close, so a published file is a closed one.
-// A file opened for writing also keeps its changed metadata in memory until the next flush: by
-// default HDF5 evicts metadata whenever its cache is full, so a file killed between two flushes
-// (SIGKILL after a frame) could hold a chunk index that points past the end the file's superblock
-// records, and a resumed run failed on it ("addr overflow").  Without evictions the file on disk
-// is the one of the last flush, plus raw data in space that nothing on disk refers to yet.
+// A file opened for writing goes through the journaled driver, whose flushes are atomic: a run
+// killed while HDF5 flushed left chunk indices pointing to nodes never written
+// (io/journaled_file_driver.hpp).
 Handle access_properties(const std::string& path, bool writing) {
   Handle properties = owned(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, H5I_INVALID_HID, "create access properties of", path.c_str());
   check(H5Pset_fclose_degree(properties.get(), H5F_CLOSE_SEMI), H5I_INVALID_HID, "set the access properties of", path.c_str());
   if (writing) {
-    H5AC_cache_config_t cache{};
-    cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
-    check(H5Pget_mdc_config(properties.get(), &cache), H5I_INVALID_HID, "read the metadata cache settings of", path.c_str());
-    cache.evictions_enabled = false;  // HDF5 allows it only with the automatic resizing off
-    cache.incr_mode = H5C_incr__off;
-    cache.flash_incr_mode = H5C_flash_incr__off;
-    cache.decr_mode = H5C_decr__off;
-    check(H5Pset_mdc_config(properties.get(), &cache), H5I_INVALID_HID, "set the metadata cache of", path.c_str());
+    check(H5Pset_driver(properties.get(), journaled_file_driver(), nullptr), H5I_INVALID_HID, "set the file driver of",
+          path.c_str());
   }
   return properties;
 }
@@ -374,6 +367,7 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
   const std::string partial = path + ".partial";
   const bool published = !std::filesystem::exists(partial);
   const std::string current = published ? path : partial;
+  if (!published) replay_journal(partial);  // the last flush of a killed run, before anything reads the file
   {
     Handle file = open_file(current);
     if (read_string_attribute(file.get(), "format") != format) {
@@ -392,9 +386,9 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
     throw io_error("cannot rename " + path + " to " + partial, errno);
   }
   file_ = Handle(open_existing(partial, H5F_ACC_RDWR), H5Fclose);
-  // A run killed while it flushed may have written chunk indices (and the chunks) before the
-  // superblock that records the file's end: the end moves to the bytes on disk, so that no chunk
-  // lies past it (HDF5 refused them: "addr overflow").
+  // HDF5's flushes do not always rewrite the superblock's end of the file: a killed run's chunk
+  // index may point to chunks beyond it, which HDF5 then refuses ("addr overflow").  The end moves
+  // to the bytes on disk, where every chunk an index on disk refers to lies.
   check(H5Fincrement_filesize(file_.get(), 0), file_.get(), "extend to its bytes on disk", partial.c_str());
   for (const std::string& name : frame_datasets(file_.get())) {
     Handle dataset = open_dataset(file_.get(), name.c_str());

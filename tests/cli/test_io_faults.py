@@ -83,7 +83,8 @@ def check_failed_run(label, out, result, names):
     check(any(name in result.stderr for name in names), f"{label}: the message names none of {names}: {result.stderr.strip()}")
     for path in sorted(out.glob("**/*")) if out.is_dir() else []:
         check(path.suffix != ".tmp", f"{label}: temporary {path.name} left behind")
-        if path.is_file() and path.suffix != ".partial":
+        # A growing file's journal (a flush written whole but not yet applied) stays beside it.
+        if path.is_file() and path.suffix not in (".partial", ".journal"):
             check(not problems_of(path), f"{label}: {path.name} under its final name: {problems_of(path)}")
             check(same_as_clean(path), f"{label}: {path.name} under its final name differs from the clean run's")
 
@@ -224,7 +225,7 @@ for name in ANALYSES:
         check(result.returncode == EXIT_IO_FAILURE and len(lines) == 1 and lines[0].startswith("granule: I/O error: ")
               and name in lines[0], f"{label}: exit {result.returncode}, stderr {result.stderr.strip()[-400:]!r}")
         for path in out.iterdir():
-            check(path.suffix == ".partial" or path.read_bytes() == (clean / path.name).read_bytes(),
+            check(path.suffix in (".partial", ".journal") or path.read_bytes() == (clean / path.name).read_bytes(),
                   f"{label}: {path.name} under its final name differs from the clean analysis's")
         check(not (out / name).exists(), f"{label}: {name} published")
 print(f"{3 * len(ANALYSES)} analyses with a disk that fills up")

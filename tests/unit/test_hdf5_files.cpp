@@ -119,6 +119,29 @@ TEST(SnapshotFile, ResumesACrashedRunFromItsFirstFrames) {
   expect_frame(path, 4, 14);
 }
 
+// A flush's journal is renamed into place only when whole (io/journaled_file_driver.hpp): a
+// temporary one was never applied and goes; a damaged one stops the resume with the file's name.
+TEST(SnapshotFile, ResumeDiscardsAnUnfinishedJournalAndRefusesADamagedOne) {
+  const std::string path = (scratch("journal") / "snapshots.h5").string();
+  write_and_crash(path, 4);
+  EXPECT_FALSE(fs::exists(path + ".partial.journal")) << "every flush was applied";
+  std::ofstream(path + ".partial.journal.tmp") << "half a journal";
+  {
+    SnapshotWriter resumed(path, 2);
+    EXPECT_EQ(resumed.frames(), 2);
+  }
+  EXPECT_FALSE(fs::exists(path + ".partial.journal.tmp"));
+  expect_frame(path + ".partial", 1, 1);
+
+  std::ofstream(path + ".partial.journal") << "GRNLJRN1 but not a journal";
+  try {
+    SnapshotWriter resumed(path, 2);
+    ADD_FAILURE() << "a damaged journal was accepted";
+  } catch (const IoError& error) {
+    EXPECT_NE(std::string(error.what()).find("snapshots.h5.partial.journal is damaged"), std::string::npos) << error.what();
+  }
+}
+
 TEST(SnapshotFile, ResumesAPublishedFileByRenamingItBack) {
   const std::string path = (scratch("published") / "snapshots.h5").string();
   {
