@@ -94,7 +94,8 @@ std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
   if (error) throw IoError(fmt::format("cannot create {}: {}", aside.string(), error.message()));
   for (const std::string& name : run_output_names()) {
     // A killed run's last flush first (io/journaled_file_driver.hpp): the journal stays behind.
-    if (fs::exists(fs::path(out) / (name + ".partial"))) h5::replay_journal((fs::path(out) / (name + ".partial")).string());
+    const fs::path growing = fs::path(out) / (name + ".partial");
+    if (fs::exists(growing)) h5::replay_journal(growing.string());
     for (const char* suffix : {"", ".partial"}) {
       const fs::path from = fs::path(out) / (name + suffix);
       if (!fs::exists(from)) continue;
