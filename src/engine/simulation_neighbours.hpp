@@ -28,6 +28,7 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 // Forced inline: GCC 12 finds a function that only prefetches pure, and drops its call.
 template <int D>
 [[gnu::always_inline]] inline void Simulation<D>::prefetch_next_event() const {
+  queue_.prefetch_ahead();
   const std::int32_t k = queue_.runner_up();
   if (k < 0) return;
   const EventSlot& next = slot(k);

@@ -39,6 +39,7 @@ void EventQueue::reset(std::int32_t particles) {
   buckets_per_time_ = 1.0;
   listed_ = 0;
   crowded_ = kMinimumCrowd;
+  ahead_bucket_ = kNoBucket;
 }
 
 void EventQueue::update(std::int32_t particle, double time) {
@@ -183,6 +184,7 @@ void EventQueue::rebuild() const {
   bucket_ = std::isfinite(earliest) ? bucket_of(earliest) : 0;
   for (std::size_t i = 0; i < slots_.size(); ++i) insert(static_cast<std::int32_t>(i));
   crowded_ = std::max(kMinimumCrowd, 2 * current_.size());
+  ahead_bucket_ = kNoBucket;  // the lists are new: the walk starts again at a head
 }
 
 bool EventQueue::is_consistent() const {
