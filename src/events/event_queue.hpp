@@ -76,7 +76,7 @@ class EventQueue {
   }
   // A hint, no change of the order: walk the list of the bucket after the current one a step
   // further and prefetch the slot reached, so that settle() finds the list in cache.  Its walk is a
-  // chain of cache misses (a quarter of the run time at N = 10⁶ was settle's); called once per
+  // chain of cache misses (a fifth of the run time at N = 10⁶ was settle's); called once per
   // event, the chain is followed while the current bucket's events run.  A list that changed under
   // the walk only makes the hint a poor one: any link is a particle id or a heap position.
   void prefetch_ahead() const {
@@ -149,7 +149,7 @@ class EventQueue {
   mutable double buckets_per_time_ = 1.0;
   mutable std::int64_t listed_ = 0;             // events in bucket lists
   mutable std::size_t crowded_ = 0;             // current_'s size that asks for a new width
-  mutable std::int64_t ahead_bucket_ = kNoBucket;     // the bucket whose list prefetch_ahead() walks
+  mutable std::int64_t ahead_bucket_ = kNoBucket;  // the bucket whose list prefetch_ahead() walks
   mutable std::int32_t ahead_ = kEnd;           // and the last slot it prefetched there
   std::span<const std::int32_t> tie_order_;
 };
