@@ -3,6 +3,7 @@
 // object and the system's reason), identifiers owned by Handle, attributes, extendible per-frame
 // datasets, and the `<name>.partial` life cycle of a file (create, publish, reopen and truncate).
 // Objects are created without modification times, so equal content gives byte-identical files.
+// Defined in io/hdf5_util.cpp, and the per-frame datasets and PartialFile in io/hdf5_frames.cpp.
 #pragma once
 
 #include <hdf5.h>
