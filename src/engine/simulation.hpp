@@ -26,9 +26,11 @@
 #include "engine/collapse_detector.hpp"
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
+#include "engine/scan_types.hpp"
 #include "memory/huge_page_allocator.hpp"
 #include "engine/state_archive.hpp"
 #include "engine/state_blocks.hpp"
+#include "engine/stop_reason.hpp"
 #include "engine/system_params.hpp"
 #include "events/event.hpp"
 #include "events/event_queue.hpp"
@@ -37,21 +39,6 @@
 #include "physics/rough_collision_rule.hpp"
 
 namespace granule {
-
-enum class StopReason {
-  kTimeReached,        // the requested time
-  kCollisionsReached,  // the requested number of collisions
-  kNoEvents,           // nothing will ever happen (all disks at rest relative to each other)
-  kInelasticCollapse,  // collisions piled up in vanishing time (see CollapseDetector)
-  kInterrupted,        // the interrupt flag was raised (a signal): stopped after a whole event
-};
-
-struct CollapseReport {
-  double time = 0.0;
-  std::int32_t first = -1;
-  std::int32_t second = -1;  // −1: the last collision was with a wall
-  Vec3 position;  // z = 0 in 2D
-};
 
 // The trajectory depends only on the initial state, the parameters and the grid: never on how
 // often run() is stopped, on observers, or on reading the state (tested, tests/validation).
@@ -244,44 +231,14 @@ class Simulation {
   double contact_distance(std::int32_t i, std::int32_t j) const {
     return diameter_.empty() ? params_.diameter : 0.5 * (diameter_[static_cast<std::size_t>(i)] + diameter_[static_cast<std::size_t>(j)]);
   }
-  // The earliest event of particle i from the current state (kind, partner, delay), without
-  // storing it: predict() stores it, check_invariants() compares with it.
-  // Both parts are kept: after a change of U only the crossing needs recomputing.
-  struct Crossing {
-    EventKind kind;  // kNone when the particle never leaves its cell
-    double delay;
-  };
-  struct Prediction {
-    Crossing crossing;
-    std::int32_t partner;    // the earliest collision found (−1: none)
-    double collision_delay;  // +inf when none
-    EventKind kind() const {
-      return collision_delay < crossing.delay ? EventKind::kCollision : crossing.kind;
-    }
-    double delay() const { return std::min(collision_delay, crossing.delay); }
-  };
-  // The cell offsets (each −1..1 per axis) around a particle's cell that a scan visits: the whole
-  // 3^D block, or, after a crossing, only the layer of cells that has just become adjacent.
-  struct Reach {
-    std::array<int, D> lowest;
-    std::array<int, D> highest;
-    static Reach block() {
-      Reach reach;
-      reach.lowest.fill(-1);
-      reach.highest.fill(1);
-      return reach;
-    }
-    static Reach layer_ahead(int axis, int direction) {
-      Reach reach = block();
-      reach.lowest[static_cast<std::size_t>(axis)] = reach.highest[static_cast<std::size_t>(axis)] = direction;
-      return reach;
-    }
-  };
-  // The best collision known before a scan: a kept candidate (partner −1: none).
-  struct Candidate {
-    std::int32_t partner = -1;
-    double delay = std::numeric_limits<double>::infinity();
-  };
+  // The plain data of a scan (engine/scan_types.hpp).
+  using Crossing = scan::Crossing;
+  using Prediction = scan::Prediction;
+  using Reach = scan::Reach<D>;
+  using Candidate = scan::Candidate;
+  using CellImage = scan::CellImage<D>;
+  using BlockCells = scan::BlockCells<D>;
+  static constexpr int kStencil = scan::kStencil<D>;
   // The earliest event of particle i from a scan of the whole block.
   Prediction next_event(std::int32_t i) const { return next_event(i, Reach::block(), Candidate{}); }
   // The earliest of `known` and the collisions with the particles within `reach`, and the crossing;
@@ -328,20 +285,6 @@ class Simulation {
   // The same with the coordinates of i's cell known (their divisions are paid once per prediction).
   template <typename Visit>
   void for_each_neighbour(std::int32_t i, const std::array<int, D>& cell, const Reach& reach, Visit&& visit) const;
-  // The cells within reach of a cell, in visiting order: the head of each one's list and, when the
-  // block is `imaged` (some of it lies across a face of the grid), the image each is seen at.
-  static constexpr int kStencil = D == 3 ? 27 : 9;
-  struct CellImage {
-    std::array<double, D> position;  // where the cell's particles are seen, relative to their own place
-    double velocity_x;               // and how fast that image moves along x
-  };
-  // (No member initialisers: a scan writes only what it uses; zeroing 27 images cost 2 % of a run.)
-  struct BlockCells {
-    std::array<std::int32_t, kStencil> head;
-    std::array<CellImage, kStencil> image;
-    int count;
-    bool imaged;  // otherwise every image is the cell itself and not written
-  };
   void block_cells(const std::array<int, D>& cell, const Reach& reach, BlockCells& block) const;
   // Whether a cell is away from every face of the grid: its block then sees no image.
   bool is_interior(const std::array<int, D>& cell) const;
