@@ -99,6 +99,16 @@ class CellLists {
     __builtin_prefetch(head_.data() + std::clamp<std::int64_t>(first, 0, last));
     __builtin_prefetch(head_.data() + std::clamp<std::int64_t>(first + count - 1, 0, last));
   }
+  // A hint: start fetching the first record of each of cells first .. first + count − 1, clipped to
+  // the grid.  Their heads are read (and waited for, if they are not cached).
+  template <typename Records>
+  [[gnu::always_inline]] void prefetch_first_records(const Records& records, std::int64_t first, std::int64_t count) const {
+    const std::int64_t last = static_cast<std::int64_t>(head_.size()) - 1;
+    for (std::int64_t cell = first; cell < first + count; ++cell) {
+      const std::int32_t head = head_[static_cast<std::size_t>(std::clamp<std::int64_t>(cell, 0, last))];
+      __builtin_prefetch(records.data() + std::max(head, std::int32_t{0}));
+    }
+  }
   std::size_t bytes() const { return head_.capacity() * sizeof(std::int32_t); }
   // The order within each list decides the order of candidate partners, hence ties: a
   // checkpoint keeps it exactly (the links with the records, the heads here).

@@ -171,8 +171,12 @@ class Simulation {
   const EventSlot& slot(std::int32_t i) const { return queue_.slot(i); }
   void advance(std::int32_t i);
   // Start fetching what the event after the top will read (its record, its partner's, the cell
-  // heads of its block), so that its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
+  // heads of its block or, for many disks, the first records of the cells its scan reads), so that
+  // its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
   void prefetch_next_event() const;
+  // From this many disks on, the first records of the next scan's cells are prefetched (measured:
+  // 1.07–1.08× at 7.5·10⁴ and 10⁵, 0.97–0.99× at 3·10⁴ and 5·10⁴; docs/performance.md).
+  static constexpr std::int64_t kPrefetchRecordsFrom = 65536;
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
   // Particle i leaves the box through the top (image_y = −1: it comes in from the image below) or

@@ -169,7 +169,10 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"spheres_lees_edwards", 1500, 0.3, 0.9, 10.0, 1e-6, 30.0, 8, 0x9d65e40edb575e83ULL, false, 3},
                       GoldenCase{"spheres_bidisperse", 2000, 0.3, 0.9, 0.0, 1e-7, 30.0, 9, 0x9a735fe18d28219fULL, false, 3, 1.4},
                       GoldenCase{"rough_disks_shear", 1500, 0.3, 0.9, 20.0, 1e-6, 30.0, 10, 0x9ffdafdc6a41a22cULL, false, 2, 1.0, 0.5},
-                      GoldenCase{"rough_spheres", 1500, 0.25, 0.9, 0.0, 1e-7, 30.0, 11, 0x775fbab178969dc6ULL, false, 3, 1.0, 0.3}),
+                      GoldenCase{"rough_spheres", 1500, 0.25, 0.9, 0.0, 1e-7, 30.0, 11, 0x775fbab178969dc6ULL, false, 3, 1.0, 0.3},
+                      // Enough disks for the engine to prefetch records one event ahead
+                      // (Simulation::kPrefetchRecordsFrom): a hint that must change nothing.
+                      GoldenCase{"many_disks_free_cooling_tc", 66000, 0.05, 0.9, 0.0, 1e-7, 30.0, 17, 0x126b8aea677c7323ULL}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace
