@@ -174,9 +174,15 @@ class Simulation {
   // heads of its block or, for many disks, the first records of the cells its scan reads), so that
   // its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
   void prefetch_next_event() const;
-  // From this many disks on, the first records of the next scan's cells are prefetched (measured:
-  // 1.07–1.08× at 7.5·10⁴ and 10⁵, 0.97–0.99× at 3·10⁴ and 5·10⁴; docs/performance.md).
+  // Whether the first records of the next scan's cells are prefetched (rather than the heads of
+  // its block): for disks, from kPrefetchRecordsFrom on (the records are cached below: measured
+  // 1.08× at 7.5·10⁴, 0.97–0.99× at 3·10⁴ and 5·10⁴), while the heads, read then, stay cached
+  // (16 MiB of them, about 2.4·10⁶ disks; at 10⁷ the reads stalled: 0.79–1.10×; docs/performance.md).
   static constexpr std::int64_t kPrefetchRecordsFrom = 65536;
+  static constexpr std::int64_t kPrefetchRecordsCells = std::int64_t{1} << 22;
+  bool prefetches_records() const {
+    return D == 2 && params_.particles >= kPrefetchRecordsFrom && grid_.cell_count() <= kPrefetchRecordsCells;
+  }
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
   // Particle i leaves the box through the top (image_y = −1: it comes in from the image below) or

@@ -37,16 +37,17 @@ template <int D>
   const std::int64_t rows = grid_.nx;
   const std::int64_t layers = rows * grid_.ny;
   const std::int64_t cell = next.cell();
-  // Few disks, or spheres: the heads of the block around its cell.  Their records stay in cache
-  // below about 6·10⁴ disks, where reading the heads now only costs (1–3 % at 3·10⁴ and 5·10⁴);
-  // with 27 heads to read, spheres gained nothing measurable at 1.08·10⁵ and 5·10⁵.
-  if (D == 3 || params_.particles < kPrefetchRecordsFrom) {
+  // Few disks, very many, or spheres: the heads of the block around its cell.  The records stay in
+  // cache below about 6·10⁴ disks, where reading the heads now only costs (1–3 % at 3·10⁴ and
+  // 5·10⁴); heads out of the cache (10⁷ disks) stall the current event when read; with 27 heads to
+  // read, spheres gained nothing measurable at 1.08·10⁵ and 5·10⁵.
+  if (!prefetches_records()) {
     for (std::int64_t dl = D == 3 ? -1 : 0; dl <= (D == 3 ? 1 : 0); ++dl) {
       for (std::int64_t dr = -1; dr <= 1; ++dr) lists_.prefetch_heads(cell + dl * layers + dr * rows - 1, 3);
     }
     return;
   }
-  // Many disks: the first record of each cell its scan will read, one event ahead (the scan's
+  // Otherwise the first record of each cell its scan will read, one event ahead (the scan's
   // first loads from a record were 45 % of its time at 10⁶), the heads read now (they are mostly
   // in cache: 4 bytes a cell where a record is 48).  A crossing (most events in a dilute gas)
   // changes the lists of the cell it leaves and the one it enters and scans the layer beyond the
