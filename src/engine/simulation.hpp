@@ -177,7 +177,8 @@ class Simulation {
   // Whether the first records of the next scan's cells are prefetched (rather than the heads of
   // its block): for disks, from kPrefetchRecordsFrom on (the records are cached below: measured
   // 1.08× at 7.5·10⁴, 0.97–0.99× at 3·10⁴ and 5·10⁴), while the heads, read then, stay cached
-  // (16 MiB of them, about 2.4·10⁶ disks; at 10⁷ the reads stalled: 0.79–1.10×; docs/performance.md).
+  // (16 MiB of them, about 2.4·10⁶ disks; at 10⁷, where they are not, four pairs gave 0.79–1.16×,
+  // unresolved; docs/performance.md).  Evaluated per event: a load and a predicted branch.
   static constexpr std::int64_t kPrefetchRecordsFrom = 65536;
   static constexpr std::int64_t kPrefetchRecordsCells = std::int64_t{1} << 22;
   bool prefetches_records() const {

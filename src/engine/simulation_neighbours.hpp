@@ -39,7 +39,7 @@ template <int D>
   const std::int64_t cell = next.cell();
   // Few disks, very many, or spheres: the heads of the block around its cell.  The records stay in
   // cache below about 6·10⁴ disks, where reading the heads now only costs (1–3 % at 3·10⁴ and
-  // 5·10⁴); heads out of the cache (10⁷ disks) stall the current event when read; with 27 heads to
+  // 5·10⁴); heads out of the cache (10⁷ disks) would stall the current event when read; with 27 heads to
   // read, spheres gained nothing measurable at 1.08·10⁵ and 5·10⁵.
   if (!prefetches_records()) {
     for (std::int64_t dl = D == 3 ? -1 : 0; dl <= (D == 3 ? 1 : 0); ++dl) {
