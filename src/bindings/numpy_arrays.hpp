@@ -1,6 +1,6 @@
 // NumPy arrays from and to the per-particle columns of ParticleState (x, y, z,
-// v…): the engine keeps one record per particle at its own local time, so the
-// arrays of one moment are computed, and handed out as read-only copies.
+// v…): the engine keeps one record per particle at its clock base, along its present flight, so
+// the arrays of one moment are computed, and handed out as read-only copies.
 #pragma once
 
 #include <pybind11/numpy.h>

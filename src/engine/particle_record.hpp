@@ -1,9 +1,16 @@
-// One record per particle with what a neighbour's collision test reads: position and velocity at
-// the particle's local time t, and the link of its cell list; with its collision counter.  A test
-// then touches one record, 48 bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read
-// six separate arrays before (issue 18; docs/performance.md).  The rest of a particle's data
-// (its pending event, cell, candidate time) is read only when its own event runs and stays in
-// its EventSlot (events/event_slot.hpp).
+// One record per particle with what a neighbour's collision test reads: position and velocity,
+// and the link of its cell list; with its collision counter.  A test then touches one record, 40
+// bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read six separate
+// arrays before (issue 18; docs/performance.md).  The rest of a particle's data (its pending event,
+// cell, candidate time) is read only when its own event runs and stays in its EventSlot
+// (events/event_slot.hpp).
+//
+// The record holds the particle's state extrapolated back to the engine's clock base (t = 0 of
+// `t_now_`) along its present flight — a "false position" — so the position now is r + v·t_now
+// (+ g·t_now²/2 under gravity), and no local time is stored: a flight's state is written only when
+// its velocity changes.  The clock is re-based every few events per particle
+// (engine/simulation.cpp), which keeps |v·t_now| to a few free paths and the round-off of
+// r + v·t_now at that of a position.
 #pragma once
 
 #include <cstdint>
@@ -15,14 +22,13 @@ namespace granule {
 // A sphere's record is aligned to its cache line: the allocator aligns to 16 bytes only, and a
 // record at an offset of 16 straddled two lines, so every neighbour test missed twice.
 template <int D>
-struct alignas(D == 3 ? 64 : 16) ParticleRecord {
-  Vec<D> r;                 // position at local time t
-  Vec<D> v;                 // velocity at local time t
-  double t = 0.0;           // local time (relative to the engine's clock base)
+struct alignas(D == 3 ? 64 : 8) ParticleRecord {
+  Vec<D> r;                 // position at the clock base, on the present flight
+  Vec<D> v;                 // velocity at the clock base (the velocity now, without gravity)
   std::int32_t next = -1;   // the next particle in the same cell (CellLists), −1 at the end
   std::uint32_t count = 0;  // collisions so far: invalidates predictions that involve this particle
 };
 
-static_assert(sizeof(ParticleRecord<2>) == 48 && sizeof(ParticleRecord<3>) == 64);
+static_assert(sizeof(ParticleRecord<2>) == 40 && sizeof(ParticleRecord<3>) == 64);
 
 }  // namespace granule

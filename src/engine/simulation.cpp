@@ -14,36 +14,50 @@ namespace granule {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Re-base the clock every this many events per particle: cheap (O(N)) and keeps local times
-// small so that x + v (t − t_i) keeps full precision in arbitrarily long runs.
+// Re-base the clock every this many events per particle: cheap (O(N)) and keeps t_now small, so
+// that a position now, r + v·t_now from the record's false position, keeps the precision of a
+// position in arbitrarily long runs (particle_record.hpp).
 constexpr std::int64_t kRebaseEventsPerParticle = 16;
 
 inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
 template <int D>
-Vec<D> Simulation<D>::position_after(std::int32_t i, double dt) const {
+Vec<D> Simulation<D>::position_at(std::int32_t i, double time) const {
   const ParticleRecord<D>& p = particles_[at(i)];
   Vector r;
   if (has_gravity_) {
-    for (int a = 0; a < D; ++a) r[a] = p.r[a] + (p.v[a] + 0.5 * gravity_[a] * dt) * dt;
+    for (int a = 0; a < D; ++a) r[a] = p.r[a] + (p.v[a] + 0.5 * gravity_[a] * time) * time;
   } else {
-    for (int a = 0; a < D; ++a) r[a] = p.r[a] + p.v[a] * dt;
+    for (int a = 0; a < D; ++a) r[a] = p.r[a] + p.v[a] * time;
   }
   return r;
 }
 
 template <int D>
 Vec<D> Simulation<D>::position_now(std::int32_t i) const {
-  return position_after(i, t_now_ - particles_[at(i)].t);
+  return position_at(i, t_now_);
 }
 
 template <int D>
 Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
   const ParticleRecord<D>& p = particles_[at(i)];
   Vector v = p.v;
-  if (has_gravity_) v = v + (t_now_ - p.t) * gravity_;
+  if (has_gravity_) v = v + t_now_ * gravity_;
   return v;
+}
+
+template <int D>
+void Simulation<D>::set_velocity_now(std::int32_t i, const Vector& v) {
+  // A new flight through the position now: its false position moves by the change of velocity
+  // times t_now (particle_record.hpp).  Without gravity the velocity is stored as given, so that
+  // energy and momentum budgets are those of the collision rule alone.
+  ParticleRecord<D>& p = particles_[at(i)];
+  for (int a = 0; a < D; ++a) {
+    const double v_base = has_gravity_ ? v[a] - gravity_[a] * t_now_ : v[a];
+    p.r[a] += (p.v[a] - v_base) * t_now_;
+    p.v[a] = v_base;
+  }
 }
 
 template <int D>
@@ -98,22 +112,6 @@ double Simulation<D>::bytes_per_particle() const {
 }
 
 template <int D>
-void Simulation<D>::advance(std::int32_t i) {
-  ParticleRecord<D>& p = particles_[at(i)];
-  const double dt = t_now_ - p.t;
-  if (has_gravity_) {
-    const Vector r = position_after(i, dt);
-    for (int a = 0; a < D; ++a) {
-      p.r[a] = r[a];
-      p.v[a] += gravity_[a] * dt;
-    }
-  } else {
-    for (int a = 0; a < D; ++a) p.r[a] += p.v[a] * dt;
-  }
-  p.t = t_now_;
-}
-
-template <int D>
 std::int32_t Simulation<D>::cell_of(const Vector& r) const {
   const double xi = frame_.sheared_x(r[0], r[1], strain());
   const int column = std::clamp(static_cast<int>(std::floor(xi / grid_.width)), 0, grid_.nx - 1);
@@ -126,7 +124,14 @@ std::int32_t Simulation<D>::cell_of(const Vector& r) const {
 template <int D>
 void Simulation<D>::rebase() {
   const double delta = t_now_;
-  for (auto& p : particles_) p.t -= delta;
+  // Every false position moves to the new base (particle_record.hpp).
+  for (std::size_t k = 0; k < particles_.size(); ++k) {
+    ParticleRecord<D>& p = particles_[k];
+    for (int a = 0; a < D; ++a) {
+      p.r[a] += has_gravity_ ? (p.v[a] + 0.5 * gravity_[a] * delta) * delta : p.v[a] * delta;
+      if (has_gravity_) p.v[a] += gravity_[a] * delta;
+    }
+  }
   for (auto& t : last_collision_) t -= delta;
   for (EventSlot& s : queue_.slots()) s.collision_time -= delta;
   queue_.shift_times(delta);
@@ -142,8 +147,7 @@ void Simulation<D>::rebase() {
 template <int D>
 void Simulation<D>::rebuild() {
   const auto n = static_cast<std::int32_t>(params_.particles);
-  for (std::int32_t i = 0; i < n; ++i) advance(i);
-  rebase();
+  rebase();  // the records now hold the states now, which are wrapped into the box
   const double lx = params_.length_x;
   const double s = strain();
   // Wall axes are never wrapped: a grain's centre stays a radius inside them (check_invariants).
@@ -187,7 +191,6 @@ void Simulation<D>::start_production(const SystemParams& production) {
 
 template <int D>
 void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
-  advance(i);
   const std::int32_t old_cell = slot(i).cell();
   std::array<int, D> cell = cell_coordinates(old_cell);
   const int axis = crossing_axis(kind);
@@ -217,14 +220,13 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
 
 template <int D>
 bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
-  advance(i);
-  advance(j);
   const double s = strain();
   const Vector ri = position_now(i);
-  const auto [iy, shift] = nearest_image(position_now(j) - ri);
+  const Vector rj = position_now(j);
+  const auto [iy, shift] = nearest_image(rj - ri);
 
   Vector r;
-  for (int a = 0; a < D; ++a) r[a] = particles_[at(j)].r[a] + shift.position[a] - particles_[at(i)].r[a];
+  for (int a = 0; a < D; ++a) r[a] = rj[a] + shift.position[a] - ri[a];
   const Vector v1 = velocity_now(i);
   Vector v2 = velocity_now(j);
   v2[0] += shift.velocity_x;
@@ -255,10 +257,10 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   } else {
     after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
   }
-  for (int a = 0; a < D; ++a) {
-    particles_[at(i)].v[a] = after.v1[a];
-    particles_[at(j)].v[a] = a == 0 ? after.v2[a] - shift.velocity_x : after.v2[a];
-  }
+  set_velocity_now(i, after.v1);
+  Vector v2_after = after.v2;
+  v2_after[0] -= shift.velocity_x;
+  set_velocity_now(j, v2_after);
   ++particles_[at(i)].count;
   ++particles_[at(j)].count;
   ++collisions_;

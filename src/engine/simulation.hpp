@@ -169,7 +169,6 @@ class Simulation {
   void rebase();
   EventSlot& slot(std::int32_t i) { return queue_.slot(i); }
   const EventSlot& slot(std::int32_t i) const { return queue_.slot(i); }
-  void advance(std::int32_t i);
   // Start fetching what the event after the top will read (its record, its partner's, the cell
   // heads of its block or, for many disks, the first records of the cells its scan reads), so that
   // its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
@@ -217,9 +216,11 @@ class Simulation {
     }
   }
   Vector position_now(std::int32_t i) const;
-  // Position and velocity of particle i `dt` after its local time (parabolic under gravity).
-  Vector position_after(std::int32_t i, double dt) const;
+  // Position of particle i at `time` on its present flight (parabolic under gravity), its
+  // velocity now, and a new velocity from now on (particle_record.hpp).
+  Vector position_at(std::int32_t i, double time) const;
   Vector velocity_now(std::int32_t i) const;
+  void set_velocity_now(std::int32_t i, const Vector& v);
   Spin<D> spin(std::int32_t i) const;
   void set_spin(std::int32_t i, const Spin<D>& w);
   double box_length(int axis) const {
@@ -318,7 +319,7 @@ class Simulation {
   double segment_end_ = std::numeric_limits<double>::infinity();  // absolute production time
 
   // Particles by plain id: the records a neighbour's collision test reads (position and velocity
-  // at local time t, cell-list link, collision counter), then the arrays of optional features.
+  // at the clock base, cell-list link, collision counter), then the arrays of optional features.
   // What only a particle's own events read is its EventSlot, held by queue_.
   HugePageVector<ParticleRecord<D>> particles_;
   std::vector<double> diameter_, mass_;  // polydisperse runs only

@@ -1,4 +1,4 @@
-// Checkpoints of the engine: everything that decides its future — positions at local times,
+// Checkpoints of the engine: everything that decides its future — false positions at the clock base,
 // pending events, the engine's numbering of the particles, cell-list order (it breaks ties between equal collision times), clocks, TC history, the collapse
 // detector — so that a run restored from one continues bit for bit (tests/validation).
 #include <cmath>
@@ -103,7 +103,6 @@ void visit_record_fields(Visit&& visit) {
     visit("z", [](auto& p) -> auto& { return p.r.z; });
     visit("vz", [](auto& p) -> auto& { return p.v.z; });
   }
-  visit("local_time", [](auto& p) -> auto& { return p.t; });
   visit("collision_count", [](auto& p) -> auto& { return p.count; });
   visit("cell_list_next", [](auto& p) -> auto& { return p.next; });
 }

@@ -68,7 +68,6 @@ RoughImpulse<D> Simulation<D>::collide_rough(std::int32_t i, std::int32_t j, Vec
 
 template <int D>
 void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
-  advance(i);
   const int axis = face / 2;
   const WallParams& wall = params_.wall[static_cast<std::size_t>(face)];
   Vector k_hat;  // from the grain towards the wall
@@ -94,7 +93,7 @@ void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
   const TangentialLaw law{wall.tangential_restitution, std::numeric_limits<double>::infinity()};
   const RoughImpulse<D> impulse = rough_impulse(grain, surface, k_hat, e, law);
   apply_rough_impulse(grain, surface, k_hat, impulse);
-  particles_[at(i)].v = grain.velocity;
+  set_velocity_now(i, grain.velocity);
   if (params_.roughness.rough) set_spin(i, grain.spin);
   ++particles_[at(i)].count;  // its pending partners' predictions are stale
 

@@ -139,14 +139,14 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
     do {
       const ParticleRecord<D>& pj = particles_[at(j)];
       const auto slot = static_cast<std::size_t>(batch.size);
-      const double dt_j = t_now_ - pj.t;
+      const double now = t_now_;
       for (int a = 0; a < D; ++a) {
         double vj = pj.v[a];
         if constexpr (kGravity) {
-          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * dt_j) * dt_j + shift[static_cast<std::size_t>(a)] - ri[a];
-          vj += gravity_[a] * dt_j;
+          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * now) * now + shift[static_cast<std::size_t>(a)] - ri[a];
+          vj += gravity_[a] * now;
         } else {
-          batch.r[a][slot] = pj.r[a] + vj * dt_j + shift[static_cast<std::size_t>(a)] - ri[a];
+          batch.r[a][slot] = pj.r[a] + vj * now + shift[static_cast<std::size_t>(a)] - ri[a];
         }
         batch.v[a][slot] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
       }

@@ -73,8 +73,7 @@ bool Simulation<D>::meets_through_y_image(std::int32_t i) const {
   const std::int32_t k = slot(i).partner;
   if (k < 0 || !candidate_valid(i) || slot(i).collision_time == kInf) return false;
   const double delay = slot(i).collision_time - t_now_;
-  return std::abs(position_after(k, delay + t_now_ - particles_[at(k)].t)[1] -
-                  position_after(i, delay + t_now_ - particles_[at(i)].t)[1]) >
+  return std::abs(position_at(k, t_now_ + delay)[1] - position_at(i, t_now_ + delay)[1]) >
          0.5 * params_.length_y;
 }
 
@@ -113,12 +112,14 @@ template <int D>
 void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
   const ImageShift shift = frame_.image_shift(0, image_y, strain());
   ParticleRecord<D>& p = particles_[at(i)];
-  const double vx_before = p.v[0];
   p.r[0] += shift.position.x;
   p.r[1] += shift.position.y;
-  p.v[0] += shift.velocity_x;
+  Vector v = velocity_now(i);
+  const double vx_before = v[0];
+  v[0] += shift.velocity_x;
+  set_velocity_now(i, v);
   if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), user_id(i), -image_y, vx_before, p.v[0]};
+  const BoundaryCrossingRecord record{time(), user_id(i), -image_y, vx_before, v[0]};
   for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
 

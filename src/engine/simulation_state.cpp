@@ -11,6 +11,7 @@ namespace granule {
 
 template <int D>
 void Simulation<D>::load(const ParticleState& state) {
+  // Loaded at t_now_ = 0 (by the constructor), where a false position is the position itself.
   if (state.dimension != D) throw std::invalid_argument("the initial state has another dimension than the engine");
   particles_.assign(state.size(), ParticleRecord<D>{});
   for (std::size_t i = 0; i < state.size(); ++i) {
@@ -19,7 +20,6 @@ void Simulation<D>::load(const ParticleState& state) {
       p.r[a] = state.position(a)[i];
       p.v[a] = state.velocity(a)[i];
     }
-    p.t = t_now_;
   }
   diameter_ = state.diameter;
   mass_ = state.mass;

@@ -175,8 +175,9 @@ INSTANTIATE_TEST_SUITE_P(VolumeFractions, SphereEquilibrium, ::testing::Values(0
 // Binary mixtures (σ_B = 1.5 σ_A, m ∝ σ^d, equal numbers) in equilibrium: collisions per unit
 // volume and time of each species pair against Enskog theory for mixtures (BMCSL contact values
 // in 3D, Santos–Yuste–López de Haro in 2D), and the pressure against the same equations of state.
-// 4000 particles over 20 c: ≈ 1% statistics on the rarest pair; tolerance 3% (the contact values'
-// own accuracy at these densities is ~1%).
+// 4000 particles over 20 c give one run's pair rates to 0.6–1.6 % (sd over 12 seeds, 2D φ = 0.3;
+// more than the counting error, ≈ 1 %, as the composition fluctuates slowly): four runs are
+// averaged (≤ 0.8 %); tolerance 3 % (the contact values' own accuracy at these densities is ~1 %).
 struct MixtureCase {
   int dimension;
   double packing_fraction;
@@ -186,21 +187,31 @@ class MixtureEquilibrium : public ::testing::TestWithParam<MixtureCase> {};
 TEST_P(MixtureEquilibrium, PairCollisionRatesAndPressure) {
   const MixtureCase k = GetParam();
   const Mixture m = make_mixture(k.dimension, 4000, k.packing_fraction, 1.0, 1.5);
-  const EquilibriumMeasurement r = k.dimension == 3 ? measure_equilibrium<3>(m, 20.0, 5) : measure_equilibrium<2>(m, 20.0, 5);
   const double half = 0.5 * static_cast<double>(m.params.particles);
   const std::vector<theory::MixtureSpecies> species{{m.sigma_small, 1.0, half}, {m.sigma_large, m.mass_large, half}};
   ASSERT_NEAR(theory::mixture_packing_fraction(k.dimension, species), k.packing_fraction, 1e-12);
   const char* names[] = {"small-small", "small-large", "large-large"};
   const std::size_t first[] = {0, 0, 1}, second[] = {0, 1, 1};
-  for (std::size_t pair = 0; pair < 3; ++pair) {
-    const double expected = theory::pair_collision_rate_density(k.dimension, species, first[pair], second[pair], r.temperature);
-    std::printf("%dD phi=%.2f %s: %.5g collisions per volume and time (Enskog %.5g, ratio %.4f)\n", k.dimension,
-                k.packing_fraction, names[pair], r.pair_rate_density[pair], expected, r.pair_rate_density[pair] / expected);
-    EXPECT_NEAR(r.pair_rate_density[pair] / expected, 1.0, 0.03) << names[pair];
+  // Each run against the theory at its own temperature, the ratios averaged.
+  constexpr int kRuns = 4;
+  std::array<double, 3> rate_ratio{};
+  double z_ratio = 0.0;
+  for (std::uint64_t seed = 5; seed < 5 + kRuns; ++seed) {
+    const EquilibriumMeasurement r =
+        k.dimension == 3 ? measure_equilibrium<3>(m, 20.0, seed) : measure_equilibrium<2>(m, 20.0, seed);
+    for (std::size_t pair = 0; pair < 3; ++pair) {
+      const double expected = theory::pair_collision_rate_density(k.dimension, species, first[pair], second[pair], r.temperature);
+      rate_ratio[pair] += r.pair_rate_density[pair] / expected / kRuns;
+    }
+    z_ratio += r.compressibility / (theory::mixture_pressure(k.dimension, species, r.temperature) / (2.0 * half * r.temperature)) / kRuns;
   }
-  const double z = theory::mixture_pressure(k.dimension, species, r.temperature) / (2.0 * half * r.temperature);
-  std::printf("%dD phi=%.2f mixture Z=%.4f (equation of state %.4f)\n", k.dimension, k.packing_fraction, r.compressibility, z);
-  EXPECT_NEAR(r.compressibility / z, 1.0, 0.02);
+  for (std::size_t pair = 0; pair < 3; ++pair) {
+    std::printf("%dD phi=%.2f %s: collisions per volume and time / Enskog %.4f (%d runs)\n", k.dimension,
+                k.packing_fraction, names[pair], rate_ratio[pair], kRuns);
+    EXPECT_NEAR(rate_ratio[pair], 1.0, 0.03) << names[pair];
+  }
+  std::printf("%dD phi=%.2f mixture Z / equation of state %.4f\n", k.dimension, k.packing_fraction, z_ratio);
+  EXPECT_NEAR(z_ratio, 1.0, 0.02);
 }
 
 INSTANTIATE_TEST_SUITE_P(Mixtures, MixtureEquilibrium,

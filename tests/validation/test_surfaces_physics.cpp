@@ -288,9 +288,15 @@ void check_rough_cooling(double e, double beta) {
 }
 
 // The cooling state: started with T_rot/T_tr at the kinetic theory's fixed point R (the positive
-// root of its quadratic), the gas keeps it while it cools.
+// root of its quadratic), the gas keeps it while it cools.  One run's mean T_rot/T_tr over c = 0.5
+// … 4 (36 states) fluctuates by 2–3 % from seed to seed (measured over 12 seeds: sd 0.017–0.030
+// for the disks, 0.020–0.024 for the spheres), so the check averages 12 independent runs (≈ 0.7 %).
+// Means of 12 runs sat 1.8–2.5 % below R for the disks and 0.5–1.8 % for the spheres (two sets of
+// seeds, two builds whose trajectories differ by round-off): the Maxwellian theory neglects the non-Gaussian parts of the
+// distributions (Brilliantov, Pöschel et al., PRL 98, 128001 (2007)).  Tolerance 4 %: a wrong
+// moment of inertia or tangential rule moves R by far more.
 template <int D>
-void check_cooling_state(double e, double beta) {
+double cooling_state_ratio_of_run(double e, double beta, std::uint64_t seed) {
   std::array<int, D> per_axis;
   per_axis.fill(D == 2 ? 50 : 14);
   const double sigma = D == 2 ? 0.004 : 0.0216;
@@ -299,7 +305,7 @@ void check_cooling_state(double e, double beta) {
   make_rough(p, -1.0, q);
   const theory::RoughGrains grains{e, beta, q};
   const double ratio = theory::rough_temperature_ratio(D, grains);
-  ParticleState initial = lattice_gas<D>(p, per_axis, 1.0, 41);
+  ParticleState initial = lattice_gas<D>(p, per_axis, 1.0, seed);
   for (int k = 0; k < initial.spin_components(); ++k) {
     for (double& w : initial.spin(k)) w *= std::sqrt(ratio);
   }
@@ -310,8 +316,6 @@ void check_cooling_state(double e, double beta) {
   production.roughness.tangential_restitution = beta;
   sim.start_production(production);
   const double inertia = q * 0.25 * sigma * sigma;
-  // The ratio of one state fluctuates by ~√(2/N) per temperature (3 % here): averaged over 36
-  // states from c = 0.5 to 4.
   double mean_ratio = 0.0;
   const int samples = 36;
   for (int k = 0; k < samples; ++k) {
@@ -324,9 +328,20 @@ void check_cooling_state(double e, double beta) {
     }
     mean_ratio += rot / (s.spin_components() * static_cast<double>(s.size())) / temperature_of(s) / samples;
   }
-  std::printf("[%dD e=%.2f β=%+.2f] mean T_rot/T_tr over c = 0.5 … 4: %.4f, cooling state of the theory %.4f\n", D, e,
-              beta, mean_ratio, ratio);
-  EXPECT_NEAR(mean_ratio / ratio, 1.0, 0.03);
+  return mean_ratio / ratio;
+}
+
+template <int D>
+void check_cooling_state(double e, double beta) {
+  constexpr int kRuns = 12;
+  std::vector<double> runs;
+  for (int k = 0; k < kRuns; ++k) runs.push_back(cooling_state_ratio_of_run<D>(e, beta, 41 + static_cast<std::uint64_t>(k)));
+  double mean = 0.0, square = 0.0;
+  for (const double r : runs) mean += r / kRuns;
+  for (const double r : runs) square += (r - mean) * (r - mean) / (kRuns - 1);
+  std::printf("[%dD e=%.2f β=%+.2f] mean T_rot/T_tr over c = 0.5 … 4 / the theory's cooling state: %.4f ± %.4f (%d runs)\n",
+              D, e, beta, mean, std::sqrt(square / kRuns), kRuns);
+  EXPECT_NEAR(mean, 1.0, 0.04);
 }
 
 TEST(SurfacesPhysics, RoughDisksKeepTheCoolingStateRatio) { check_cooling_state<2>(0.9, 0.0); }
