@@ -1,9 +1,10 @@
 // One record per particle with what a neighbour's collision test reads: position and velocity,
-// and the link of its cell list; with its collision counter.  A test then touches one record, 40
+// and the link of its cell list; with its collision counter.  A test then touches one record, 48
 // bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read six separate
-// arrays before (issue 18; docs/performance.md).  The rest of a particle's data (its pending event,
-// cell, candidate time) is read only when its own event runs and stays in its EventSlot
-// (events/event_slot.hpp).
+// arrays before (issue 18; docs/performance.md).  The record also holds the particle's collision
+// candidate (partner and the partner's counter), read at its own events: in a sphere's record
+// those 8 bytes were padding, and out of the EventSlot they leave it 16 bytes (its pending event's
+// time, kind and cell, and the calendar's link; events/event_slot.hpp).
 //
 // The record holds the particle's state extrapolated back to the engine's clock base (t = 0 of
 // `t_now_`) along its present flight — a "false position" — so the position now is r + v·t_now
@@ -27,8 +28,13 @@ struct alignas(D == 3 ? 64 : 8) ParticleRecord {
   Vec<D> v;                 // velocity at the clock base (the velocity now, without gravity)
   std::int32_t next = -1;   // the next particle in the same cell (CellLists), −1 at the end
   std::uint32_t count = 0;  // collisions so far: invalidates predictions that involve this particle
+  // The collision candidate, pending or not, kept through crossings while it is valid (the
+  // partner's count unchanged); its time is computed again when needed, not stored
+  // (Simulation::candidate_delay).
+  std::int32_t partner = -1;        // −1: none
+  std::uint32_t partner_count = 0;  // the partner's count when predicted
 };
 
-static_assert(sizeof(ParticleRecord<2>) == 40 && sizeof(ParticleRecord<3>) == 64);
+static_assert(sizeof(ParticleRecord<2>) == 48 && sizeof(ParticleRecord<3>) == 64);
 
 }  // namespace granule

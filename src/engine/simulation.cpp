@@ -133,7 +133,6 @@ void Simulation<D>::rebase() {
     }
   }
   for (auto& t : last_collision_) t -= delta;
-  for (EventSlot& s : queue_.slots()) s.collision_time -= delta;
   queue_.shift_times(delta);
   collapse_detector_.shift_times(delta);
   actions_.shift_times(delta);
@@ -349,12 +348,14 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     check_popped_event(i);
 #endif
     const EventKind kind = slot(i).kind();
-    const std::int32_t j = slot(i).partner;
+    // The partner's record: read by a collision, and by a crossing that keeps its candidate.
+    const std::int32_t j = particles_[at(i)].partner;
+    if (j >= 0) __builtin_prefetch(particles_.data() + j);
     if (kind == EventKind::kCollision) __builtin_prefetch(&slot(j));  // re-scheduled below, if valid
     bool collided = false;
     bool hit_wall = false;
     if (kind == EventKind::kCollision) {
-      if (particles_[at(j)].count != slot(i).partner_count) {
+      if (!candidate_valid(i)) {
         predict(i);  // the partner has collided since: stale
       } else {
         collided = execute_collision(i, j);

@@ -199,9 +199,6 @@ class Simulation {
   // the boundary change, collisions inside the box do not (only they are kept, re-predicted).
   void change_image_velocity(double velocity);
   void repredict_after_shear_change();
-  // Whether particle i's valid collision candidate is a pair that meets through a y image (its
-  // time then depends on U).
-  bool meets_through_y_image(std::int32_t i) const;
   std::int32_t cell_of(const Vector& position) const;
   // The cell coordinates (column, row, layer) of a cell id.
   std::array<int, D> cell_coordinates(std::int32_t cell) const {
@@ -266,8 +263,21 @@ class Simulation {
   void predict_after_crossing(std::int32_t i, int axis, int direction);
   // Whether particle i's kept candidate is still a valid collision: its partner has not collided since.
   bool candidate_valid(std::int32_t i) const {
-    const std::int32_t k = slot(i).partner;
-    return k < 0 || particles_[static_cast<std::size_t>(k)].count == slot(i).partner_count;
+    const ParticleRecord<D>& p = particles_[static_cast<std::size_t>(i)];
+    return p.partner < 0 || particles_[static_cast<std::size_t>(p.partner)].count == p.partner_count;
+  }
+  // Particle i's valid candidate with its time from now, computed from the two flights (+inf: none,
+  // or a grazing pair that round-off now misses).  The pair's image is the nearest one: from its
+  // prediction to its contact the pair's separation runs along a straight segment between two
+  // points within two cells of each other, so with at least kCandidateCells cells along every
+  // periodic axis (recomputes_candidates()) that image is the pair's; smaller grids scan again.
+  static constexpr int kCandidateCells = 5;
+  Candidate candidate(std::int32_t i) const;
+  bool recomputes_candidates() const {
+    for (int a = 0; a < D; ++a) {
+      if (!params_.walls[static_cast<std::size_t>(a)] && grid_.count(a) < kCandidateCells) return false;
+    }
+    return true;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).

@@ -105,15 +105,8 @@ void visit_record_fields(Visit&& visit) {
   }
   visit("collision_count", [](auto& p) -> auto& { return p.count; });
   visit("cell_list_next", [](auto& p) -> auto& { return p.next; });
-}
-
-// The same for the event slots (the cell and the event kind, packed in one word of the slot, and
-// the event time, the queue's, are saved and checked apart).
-template <typename Visit>
-void visit_slot_fields(Visit&& visit) {
-  visit("event_partner", [](auto& s) -> auto& { return s.partner; });
-  visit("event_partner_count", [](auto& s) -> auto& { return s.partner_count; });
-  visit("collision_time", [](auto& s) -> auto& { return s.collision_time; });
+  visit("event_partner", [](auto& p) -> auto& { return p.partner; });
+  visit("event_partner_count", [](auto& p) -> auto& { return p.partner_count; });
 }
 
 // Each field of `items` as one array of the archive (generated when the archive is written: the
@@ -199,8 +192,8 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
     }
   });
   put_fields(archive, prefix, std::span<const ParticleRecord<D>>(particles_), [](auto&& visit) { visit_record_fields<D>(visit); });
+  // The event slots' cell and kind, packed in one word, and their times, the queue's, apart.
   const std::span<const EventSlot> slots = queue_.slots();
-  put_fields(archive, prefix, slots, [](auto&& visit) { visit_slot_fields(visit); });
   archive.put_generated<std::int32_t>(prefix + "cell", slots.size(), [slots](std::size_t first, std::span<std::int32_t> out) {
     for (std::size_t k = 0; k < out.size(); ++k) out[k] = slots[first + k].cell();
   });
@@ -246,7 +239,6 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   };
   get_fields(particles_, [](auto&& visit) { visit_record_fields<D>(visit); });
   const std::span<EventSlot> slots = queue_.slots();
-  get_fields(slots, [](auto&& visit) { visit_slot_fields(visit); });
   visit_saved_state(*this, [&](const char* name, auto& value) {
     using Value = std::decay_t<decltype(value)>;
     if constexpr (std::is_same_v<Value, double>) {
@@ -274,8 +266,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   for (std::size_t i = 0; i < n; ++i) {
     if (!valid_event_kind(kinds[i], D)) throw std::runtime_error("checkpoint has an unknown event kind");
     const bool collision = kinds[i] == static_cast<std::uint8_t>(EventKind::kCollision);
-    if (cells[i] < 0 || cells[i] >= grid.cell_count() || slots[i].partner < -1 || slots[i].partner >= params.particles ||
-        (collision && slots[i].partner < 0)) {
+    const std::int32_t partner = particles_[i].partner;
+    if (cells[i] < 0 || cells[i] >= grid.cell_count() || partner < -1 || partner >= params.particles || (collision && partner < 0)) {
       throw std::runtime_error("checkpoint has a disk with an invalid cell or event partner");
     }
     slots[i].set_cell(cells[i]);

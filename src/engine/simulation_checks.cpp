@@ -107,8 +107,8 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   const EventKind kind = slot(i).kind();
   const Vector r = position_now(i);
   if (kind == EventKind::kCollision) {
-    const std::int32_t j = slot(i).partner;
-    if (particles_[at(j)].count != slot(i).partner_count) return;  // stale: nothing to execute
+    const std::int32_t j = particles_[at(i)].partner;
+    if (!candidate_valid(i)) return;  // stale: nothing to execute
     const Vector offset = position_now(j) - r;
     const double distance = norm(offset + nearest_image(offset).shift.position);
     const double sigma = contact_distance(i, j);

@@ -32,8 +32,7 @@ template <int D>
   const std::int32_t k = queue_.runner_up();
   if (k < 0) return;
   const EventSlot& next = slot(k);
-  __builtin_prefetch(particles_.data() + k);
-  if (next.kind() == EventKind::kCollision) __builtin_prefetch(particles_.data() + next.partner);
+  __builtin_prefetch(particles_.data() + k);  // its partner, in the record, is fetched when it runs
   const std::int64_t rows = grid_.nx;
   const std::int64_t layers = rows * grid_.ny;
   const std::int64_t cell = next.cell();

@@ -36,8 +36,8 @@ void Simulation<D>::renumber() {
     for (std::int32_t p = lists_.first(id); p != CellLists::kEnd; p = particles_[at(p)].next) destination[at(p)] = next++;
   });
   const std::span<EventSlot> slots = queue_.slots();
-  for (EventSlot& s : slots) {
-    if (s.partner >= 0) s.partner = destination[at(s.partner)];
+  for (ParticleRecord<D>& p : particles_) {
+    if (p.partner >= 0) p.partner = destination[at(p.partner)];
   }
   permute_in_place(destination, [&](std::size_t a, std::size_t b) {
     std::swap(particles_[a], particles_[b]);

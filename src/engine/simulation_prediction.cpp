@@ -169,10 +169,21 @@ void Simulation<D>::predict(std::int32_t i) {
 template <int D>
 void Simulation<D>::store(std::int32_t i, const Prediction& next) {
   slot(i).set_kind(next.kind());
-  slot(i).partner = next.partner;
-  slot(i).partner_count = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
-  slot(i).collision_time = t_now_ + next.collision_delay;
+  ParticleRecord<D>& p = particles_[at(i)];
+  p.partner = next.partner;
+  p.partner_count = next.partner >= 0 ? particles_[at(next.partner)].count : 0;
   queue_.update(i, t_now_ + next.delay());
+}
+
+template <int D>
+typename Simulation<D>::Candidate Simulation<D>::candidate(std::int32_t i) const {
+  const std::int32_t k = particles_[at(i)].partner;
+  if (k < 0) return {};
+  const Vector offset = position_now(k) - position_now(i);
+  const PartnerImage image = nearest_image(offset);
+  Vector v = velocity_now(k) - velocity_now(i);
+  v[0] += image.shift.velocity_x;
+  return {k, collision_time<D>(offset + image.shift.position, v, contact_distance(i, k))};
 }
 
 // Why the layer ahead suffices: every pair (i, j) of neighbours is covered, meaning that the event
@@ -182,15 +193,15 @@ void Simulation<D>::store(std::int32_t i, const Prediction& next) {
 // by j's slot, or by i's candidate, which is kept here (while it is valid, that is while its
 // partner has not collided: otherwise i's slot, no later than the candidate, would have lost the
 // pairs the candidate stood for, and the whole block is scanned again).  The pairs of the layer
-// ahead are new to i and are scanned.
+// ahead are new to i and are scanned.  The candidate's time is computed again from the two
+// flights (candidate()), equal to the one first predicted up to round-off.
 template <int D>
 void Simulation<D>::predict_after_crossing(std::int32_t i, int axis, int direction) {
-  if (!candidate_valid(i)) {
+  if (!candidate_valid(i) || !recomputes_candidates()) {
     predict(i);
     return;
   }
-  const Candidate kept{slot(i).partner, slot(i).collision_time - t_now_};
-  store(i, next_event(i, Reach::layer_ahead(axis, direction), kept));
+  store(i, next_event(i, Reach::layer_ahead(axis, direction), candidate(i)));
 }
 
 // The members defined in this file, for both dimensions (the class is instantiated in

@@ -52,29 +52,18 @@ void Simulation<D>::repredict_after_shear_change() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   for (std::int32_t i = 0; i < n; ++i) {
     const int row = cell_coordinates(slot(i).cell())[1];
-    if (row == 0 || row == grid_.ny - 1 || meets_through_y_image(i)) {
+    if (row == 0 || row == grid_.ny - 1 || !candidate_valid(i) || !recomputes_candidates()) {
       predict(i);  // its block reaches across the boundary, where the images' velocity changed
       continue;
     }
-    // The earliest collision inside the box is unchanged; the crossing in ξ is not.
+    // The earliest collision inside the box is unchanged, and a candidate met through a y image
+    // is computed again at the new U (candidate()); the crossing in ξ changes.
+    const Candidate kept = candidate(i);
     const Crossing crossing = next_crossing(i, cell_coordinates(slot(i).cell()), position_now(i), velocity_now(i));
-    const double t_crossing = t_now_ + crossing.delay;
-    const bool collision_first = slot(i).collision_time < t_crossing;
+    const bool collision_first = kept.delay < crossing.delay;
     slot(i).set_kind(collision_first ? EventKind::kCollision : crossing.kind);
-    queue_.update(i, collision_first ? slot(i).collision_time : t_crossing);
+    queue_.update(i, t_now_ + (collision_first ? kept.delay : crossing.delay));
   }
-}
-
-template <int D>
-bool Simulation<D>::meets_through_y_image(std::int32_t i) const {
-  // A candidate kept through crossings may be a pair that meets across the y boundary although
-  // both now sit in inner rows (one of them crossed the boundary since): at contact their lab
-  // ordinates, extrapolated from now, are then about L_y apart instead of σ.
-  const std::int32_t k = slot(i).partner;
-  if (k < 0 || !candidate_valid(i) || slot(i).collision_time == kInf) return false;
-  const double delay = slot(i).collision_time - t_now_;
-  return std::abs(position_at(k, t_now_ + delay)[1] - position_at(i, t_now_ + delay)[1]) >
-         0.5 * params_.length_y;
 }
 
 template <int D>
@@ -130,7 +119,6 @@ template void Simulation<2>::schedule_realignment();
 template void Simulation<2>::enter_shear_segment(const ShearSegment&);
 template void Simulation<2>::change_image_velocity(double);
 template void Simulation<2>::repredict_after_shear_change();
-template bool Simulation<2>::meets_through_y_image(std::int32_t) const;
 template void Simulation<2>::realign_sheared_grid();
 template Simulation<2>::PartnerImage Simulation<2>::nearest_image(const Vec<2>&) const;
 template void Simulation<2>::enter_from_image(std::int32_t, int);
@@ -139,7 +127,6 @@ template void Simulation<3>::schedule_realignment();
 template void Simulation<3>::enter_shear_segment(const ShearSegment&);
 template void Simulation<3>::change_image_velocity(double);
 template void Simulation<3>::repredict_after_shear_change();
-template bool Simulation<3>::meets_through_y_image(std::int32_t) const;
 template void Simulation<3>::realign_sheared_grid();
 template Simulation<3>::PartnerImage Simulation<3>::nearest_image(const Vec<3>&) const;
 template void Simulation<3>::enter_from_image(std::int32_t, int);

@@ -1,8 +1,9 @@
-// What only a particle's own events read and write, in one 32-byte slot (two per cache line): the
+// What only a particle's own events read and write, in one 16-byte slot (four per cache line): the
 // time of its pending event and its link in the calendar queue (the queue's part, private to it),
-// the event's kind, the collision candidate kept through crossings, and the particle's cell.  An
-// event reads, and a prediction writes, one line where the engine's 24-byte slot and the queue's
-// 16-byte node cost two lines and 40 bytes (issue 18; docs/performance.md).
+// the event's kind and the particle's cell.  An event reads, and a prediction writes, one line
+// where the engine's 24-byte slot and the queue's 16-byte node cost two lines and 40 bytes (issue
+// 18; docs/performance.md).  The collision candidate lives in the particle's record
+// (engine/particle_record.hpp).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,7 @@ namespace granule {
 
 class EventQueue;
 
-class alignas(32) EventSlot {
+class alignas(16) EventSlot {
  public:
   // Cell ids have 28 bits: the other 4 of the word hold the event kind.  The configuration refuses
   // grids of more cells (io/input_ranges.hpp, kMaxEngineCells).
@@ -30,12 +31,6 @@ class alignas(32) EventSlot {
   }
   void set_kind(EventKind kind) { cell_and_kind_ = (cell_and_kind_ & ~kKindMask) | static_cast<std::uint32_t>(kind); }
 
-  // The time of the collision candidate (`partner`), pending or not (+inf: none): kept through
-  // crossings, and through changes of U where the pair meets inside the box.
-  double collision_time = std::numeric_limits<double>::infinity();
-  std::int32_t partner = -1;        // the candidate partner (−1: none)
-  std::uint32_t partner_count = 0;  // its collision count when predicted (stale once it differs)
-
  private:
   friend class EventQueue;
   static constexpr std::uint32_t kKindMask = (1u << kKindBits) - 1;
@@ -47,6 +42,6 @@ class alignas(32) EventSlot {
   std::int32_t link_ = -1;
 };
 
-static_assert(sizeof(EventSlot) == 32);
+static_assert(sizeof(EventSlot) == 16);
 
 }  // namespace granule

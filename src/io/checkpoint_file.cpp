@@ -20,8 +20,9 @@ constexpr const char* kFormat = "granule-checkpoint";
 // 2: the engine keeps each particle's collision candidate (time and partner) through crossings, in
 // every run (version 1 kept the time only under time-dependent protocols): a version-1 checkpoint
 // cannot continue its run bit for bit and is refused.
-// 3: the particle records hold false positions at the clock base and no local time
-// (engine/particle_record.hpp); a version-2 checkpoint cannot continue its run bit for bit.
+// 3: the particle records hold false positions at the clock base and no local time, and the
+// collision candidate's time is computed again rather than stored (engine/particle_record.hpp); a
+// version-2 checkpoint cannot continue its run bit for bit.
 constexpr int kFormatVersion = 3;
 
 // The HDF5 file type of each element type an archive can hold (little-endian, fixed size).

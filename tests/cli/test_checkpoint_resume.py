@@ -129,10 +129,12 @@ check(result.returncode == 0, f"--force: {result.stderr}")
 
 # An inelastic collapse (no TC model, ẽ = 0.1 at ν = 0.4): exit 3 with advice that works as printed —
 # continue from an earlier frame with the TC model; the later outputs are set aside, not lost.
+# Within 60 collisions per disk about half the seeds collapse (16 of 30, with two builds); within
+# 200 every one of 20 did.
 collapsed = WORK / "collapsed"
 result = granule("run", "--out", collapsed, "--set", "system.particles=400", "--set", "system.area_fraction=0.4",
                  "--set", "system.restitution=0.1", "--set", "system.tc_duration=0", "--set", "initial.equilibrate=2",
-                 "--set", "run.until_collisions_per_particle=60", "--set", "output.snapshot_every_collisions_per_particle=1")
+                 "--set", "run.until_collisions_per_particle=200", "--set", "output.snapshot_every_collisions_per_particle=1")
 check(result.returncode == 3, f"collapse: exit {result.returncode}: {result.stderr[-300:]}")
 advice = [line.strip() for line in result.stderr.splitlines() if line.strip().startswith("granule run --resume")]
 check(len(advice) == 1 and "--from-frame" in advice[0] and "system.tc_duration=" in advice[0], f"advice: {result.stderr}")
