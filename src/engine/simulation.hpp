@@ -268,16 +268,20 @@ class Simulation {
   }
   // Particle i's valid candidate with its time from now, computed from the two flights (+inf: none,
   // or a grazing pair that round-off now misses).  The pair's image is the nearest one: from its
-  // prediction to its contact the pair's separation runs along a straight segment between two
-  // points within two cells of each other, so with at least kCandidateCells cells along every
-  // periodic axis (recomputes_candidates()) that image is the pair's; smaller grids scan again.
+  // prediction to its contact the pair's lab separation runs along a straight segment from a
+  // point within two cells (|Δ| < 2 cells per axis, in ξ for x) to contact, so with at least
+  // kCandidateCells cells along every periodic axis the image is unambiguous.  Under Lees–Edwards
+  // ξ = x − s y adds |s Δy| ≤ S·2h at both ends (|s| ≤ S, half the strain period, before the
+  // grid is re-aligned and everything predicted afresh): |Δξ| < 2w + 4Sh, unambiguous while
+  // L_x > 4w + 8Sh.  Smaller grids scan whole blocks (recomputes_candidates()).
   static constexpr int kCandidateCells = 5;
   Candidate candidate(std::int32_t i) const;
   bool recomputes_candidates() const {
     for (int a = 0; a < D; ++a) {
       if (!params_.walls[static_cast<std::size_t>(a)] && grid_.count(a) < kCandidateCells) return false;
     }
-    return true;
+    const bool sheared = grid_.strain_period > 0.0 && !params_.walls[0] && !params_.walls[1];
+    return !sheared || params_.length_x > 4.0 * grid_.width + 4.0 * grid_.strain_period * grid_.height;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
