@@ -169,8 +169,8 @@ class Simulation {
   void rebase();
   EventSlot& slot(std::int32_t i) { return queue_.slot(i); }
   const EventSlot& slot(std::int32_t i) const { return queue_.slot(i); }
-  // Start fetching what the event after the top will read (its record, its partner's, the cell
-  // heads of its block or, for many disks, the first records of the cells its scan reads), so that
+  // Start fetching what the event after the top will read (its record — its partner's is fetched
+  // when it is popped, the partner being named in the record —, the cell heads of its block or, for many disks, the first records of the cells its scan reads), so that
   // its cache misses overlap the top's work (engine/simulation_neighbours.hpp).
   void prefetch_next_event() const;
   // Whether the first records of the next scan's cells are prefetched (rather than the heads of

@@ -131,6 +131,7 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   }
   CollisionBatch<D> batch;
   const CellImage itself{};
+  const double now = t_now_;  // every neighbour's position is its false position moved to now
   for (int list = 0; list < lists; ++list) {
     const CellImage& image = block.imaged ? block.image[first_cell[static_cast<std::size_t>(list)]] : itself;
     const auto& shift = image.position;
@@ -139,7 +140,6 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
     do {
       const ParticleRecord<D>& pj = particles_[at(j)];
       const auto slot = static_cast<std::size_t>(batch.size);
-      const double now = t_now_;
       for (int a = 0; a < D; ++a) {
         double vj = pj.v[a];
         if constexpr (kGravity) {

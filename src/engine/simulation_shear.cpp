@@ -53,7 +53,9 @@ void Simulation<D>::repredict_after_shear_change() {
   for (std::int32_t i = 0; i < n; ++i) {
     const int row = cell_coordinates(slot(i).cell())[1];
     if (row == 0 || row == grid_.ny - 1 || !candidate_valid(i) || !recomputes_candidates()) {
-      predict(i);  // its block reaches across the boundary, where the images' velocity changed
+      // Its block reaches across the boundary, where the images' velocity changed, or its
+      // candidate is stale, or the grid too small to compute it again.
+      predict(i);
       continue;
     }
     // The earliest collision inside the box is unchanged, and a candidate met through a y image
