@@ -50,7 +50,7 @@ struct BenchOptions {
   std::string dimensions = "both";
   double collisions_per_particle = 20.0;
   std::optional<double> particles_per_cell;  // default: that of runs
-  double renumber_every = kDefaultRenumberEvery;
+  std::optional<double> renumber_every;  // default: that of runs
   std::uint64_t seed = 7;
   bool observers = false;
   std::vector<std::string> only;  // run only the workloads whose names contain one of these
@@ -122,7 +122,8 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
 template <int D>
 void run_workload(const Workload& w, const BenchOptions& o, Measurements measure = Measurements::kNone) {
   if (!selected(w, o)) return;
-  const SystemParams p = workload_system(w, D, D == 2 ? o.particles : o.particles_3d, o.renumber_every);
+  const std::int64_t particles = D == 2 ? o.particles : o.particles_3d;
+  const SystemParams p = workload_system(w, D, particles, o.renumber_every.value_or(default_renumber_every(D, particles)));
   constexpr double temperature = 1.0;
   CellGridRequest request{p.length_x, p.length_y, p.diameter, p.particles, w.lees_edwards,
                           o.particles_per_cell.value_or(kDefaultParticlesPerCell), std::nullopt};
@@ -191,8 +192,7 @@ void add_bench_command(CLI::App& root) {
       ->check(CLI::Range(0.1, 20.0));
   command->add_option("--renumber-every", options->renumber_every,
                       "Events per particle between renumberings of the engine's particles along its cells (0: never; "
-                      "default: that of runs)")
-      ->default_val(kDefaultRenumberEvery)
+                      "default: that of runs, 4 from 2 MiB of particle records on, else 0)")
       ->check(CLI::Range(0.0, 1e6));
   command->add_option("--seed", options->seed, "Seed of the initial states")->default_val(7);
   command->add_option("--only", options->only,

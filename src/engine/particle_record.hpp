@@ -30,7 +30,7 @@ struct alignas(D == 3 ? 64 : 8) ParticleRecord {
   std::uint32_t count = 0;  // collisions so far: invalidates predictions that involve this particle
   // The collision candidate, pending or not, kept through crossings while it is valid (the
   // partner's count unchanged); its time is computed again when needed, not stored
-  // (Simulation::candidate_delay).
+  // (Simulation::candidate).
   std::int32_t partner = -1;        // −1: none
   std::uint32_t partner_count = 0;  // the partner's count when predicted
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "boundary/shear_protocol.hpp"
+#include "engine/particle_record.hpp"
 
 namespace granule {
 
@@ -35,6 +36,17 @@ struct RoughnessParams {
 
 // Measured with granule bench (docs/performance.md, "Particles renumbered along the cells").
 inline constexpr double kDefaultRenumberEvery = 4.0;
+// Renumbering pays only where the particle records outgrow a core's own cache (1 MiB of L2 on the
+// machines measured): below twice that it cost 5–7 % and gained nothing (2·10⁴ disks, 1.6·10⁴
+// spheres; docs/performance.md, "No renumbering for small systems").
+inline constexpr double kRenumberFromRecordBytes = 2.0 * 1024.0 * 1024.0;
+
+// The renumbering cadence of a run that does not set engine.renumber_every: kDefaultRenumberEvery
+// from 43,691 disks or 32,769 spheres on, never below.
+inline double default_renumber_every(int dimension, std::int64_t particles) {
+  const double record_bytes = dimension == 3 ? sizeof(ParticleRecord<3>) : sizeof(ParticleRecord<2>);
+  return static_cast<double>(particles) * record_bytes > kRenumberFromRecordBytes ? kDefaultRenumberEvery : 0.0;
+}
 
 struct SystemParams {
   std::int64_t particles = 0;
@@ -61,6 +73,7 @@ struct SystemParams {
   RoughnessParams roughness;
   // Events per particle between renumberings of the engine's particles along its cells (0: never;
   // Simulation::renumber).  A matter of speed only: the trajectory is the same for any value.
+  // Runs and benchmarks that leave it unset take default_renumber_every().
   double renumber_every = kDefaultRenumberEvery;
 
   bool has_walls() const { return walls[0] || walls[1] || walls[2]; }

@@ -146,7 +146,7 @@ RunConfig resolve(const toml::table& root) {
   // A matter of speed only (the trajectory is the same for any value): no upper limit is needed
   // but a run's length, and one beyond 10⁶ events per particle is never.
   s.renumber_every = in.number("engine.renumber_every", NumberRange{0.0, 1e6}, " events per particle (0: never)")
-                         .value_or(kDefaultRenumberEvery);
+                         .value_or(default_renumber_every(s.dimension, s.particles));
   check_engine_grid(c);
   const auto diag = in.int_pair("diagnostics.cells", 1, 1 << 14);
   if (diag) {

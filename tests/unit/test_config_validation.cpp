@@ -114,6 +114,21 @@ TEST(ConfigValidation, RenumberingCadenceIsNonNegative) {
   expect_refused({"engine.renumber_every=2e6"}, {"engine.renumber_every", "[0, 1000000]"});
 }
 
+// Unset, the cadence follows the size of the particle records (48 bytes a disk, 64 a sphere):
+// renumbering from 2 MiB of them on (README, engine.renumber_every).
+TEST(ConfigValidation, RenumberingByDefaultOnlyBeyondTwoMebibytesOfRecords) {
+  const auto cadence = [](const std::vector<std::string>& overrides) {
+    const ConfigResult result = parse(overrides);
+    EXPECT_TRUE(result.config.has_value()) << result.error;
+    return result.config ? result.config->system.renumber_every : -1.0;
+  };
+  EXPECT_EQ(cadence({"system.particles=43690"}), 0.0);
+  EXPECT_EQ(cadence({"system.particles=43691"}), 4.0);
+  EXPECT_EQ(cadence({"system.dimension=3", "system.particles=32768"}), 0.0);
+  EXPECT_EQ(cadence({"system.dimension=3", "system.particles=32769"}), 4.0);
+  EXPECT_EQ(cadence({"system.particles=4000", "engine.renumber_every=2"}), 2.0);
+}
+
 TEST(ConfigValidation, EngineCellIdsFitIn28Bits) {
   // N = 2^29 at two particles per cell needs 2^28 cells; at 1.5 per cell more than that.
   expect_accepted({"system.particles=536870912", "engine.particles_per_cell=2.0"});
