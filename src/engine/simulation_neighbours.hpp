@@ -79,11 +79,15 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
   const auto visit = [&](std::int32_t cell_index) {
     const std::int32_t head = lists_.first(cell_index);
     __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
-    block.head[static_cast<std::size_t>(block.count++)] = head;
+    // Written at the next free entry, which the next non-empty list overwrites if this one is empty.
+    block.head[static_cast<std::size_t>(block.count)] = head;
+    block.place[static_cast<std::size_t>(block.count)] = static_cast<std::uint8_t>(block.visited++);
+    block.count += head != CellLists::kEnd ? 1 : 0;
   };
   const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
   const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
   block.count = 0;
+  block.visited = 0;
   // A cell away from every face of the grid (nine in ten at N = 10⁵) sees no image: its block is
   // a fixed pattern of indices around its own, and every shift is zero.
   block.imaged = !is_interior(cell);
@@ -133,7 +137,7 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];
         }
-        CellImage& image = block.image[static_cast<std::size_t>(block.count)];
+        CellImage& image = block.image[static_cast<std::size_t>(block.visited)];
         for (int a = 0; a < D; ++a) image.position[static_cast<std::size_t>(a)] = shift[a];
         image.velocity_x = row_shift.velocity_x;
         visit(grid_.index(c, r, layer));
@@ -150,11 +154,12 @@ void Simulation<D>::for_each_neighbour(std::int32_t i, const std::array<int, D>&
   block_cells(cell, reach, block);
   for (int k = 0; k < block.count; ++k) {
     const auto at = static_cast<std::size_t>(k);
+    const std::size_t place = block.place[at];
     Vector shift{};
     if (block.imaged) {
-      for (int a = 0; a < D; ++a) shift[a] = block.image[at].position[static_cast<std::size_t>(a)];
+      for (int a = 0; a < D; ++a) shift[a] = block.image[place].position[static_cast<std::size_t>(a)];
     }
-    const double shift_vx = block.imaged ? block.image[at].velocity_x : 0.0;
+    const double shift_vx = block.imaged ? block.image[place].velocity_x : 0.0;
     for (std::int32_t j = block.head[at]; j != CellLists::kEnd; j = particles_[static_cast<std::size_t>(j)].next) {
       if (j != i) visit(j, shift, shift_vx);
     }

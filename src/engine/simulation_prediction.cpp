@@ -119,24 +119,14 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   const double sigma = params_.diameter;
   BlockCells block;
   block_cells(cell, reach, block);
-  // The first particle of each non-empty list, in visiting order, compacted without a branch (about
-  // half the cells are empty, at random).
-  std::array<std::int32_t, kStencil> first;
-  std::array<std::uint8_t, kStencil> first_cell;
-  int lists = 0;
-  for (int k = 0; k < block.count; ++k) {
-    first[static_cast<std::size_t>(lists)] = block.head[static_cast<std::size_t>(k)];
-    first_cell[static_cast<std::size_t>(lists)] = static_cast<std::uint8_t>(k);
-    lists += block.head[static_cast<std::size_t>(k)] != CellLists::kEnd ? 1 : 0;
-  }
   CollisionBatch<D> batch;
   const CellImage itself{};
   const double now = t_now_;  // every neighbour's position is its false position moved to now
-  for (int list = 0; list < lists; ++list) {
-    const CellImage& image = block.imaged ? block.image[first_cell[static_cast<std::size_t>(list)]] : itself;
+  for (int list = 0; list < block.count; ++list) {
+    const CellImage& image = block.imaged ? block.image[block.place[static_cast<std::size_t>(list)]] : itself;
     const auto& shift = image.position;
     const double shift_vx = image.velocity_x;
-    std::int32_t j = first[static_cast<std::size_t>(list)];
+    std::int32_t j = block.head[static_cast<std::size_t>(list)];
     do {
       const ParticleRecord<D>& pj = particles_[at(j)];
       const auto slot = static_cast<std::size_t>(batch.size);
