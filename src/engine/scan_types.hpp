@@ -67,8 +67,7 @@ struct BlockCells {
   std::array<std::int32_t, kStencil<D>> head;     // of the non-empty lists
   std::array<std::uint8_t, kStencil<D>> place;    // of their cells in visiting order
   std::array<CellImage<D>, kStencil<D>> image;    // by place
-  int count;    // non-empty lists
-  int visited;  // cells
+  int count;  // non-empty lists
   bool imaged;  // otherwise every image is the cell itself and not written
 };
 

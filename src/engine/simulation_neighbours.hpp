@@ -76,18 +76,18 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
   // The head of every cell is read, and its first record prefetched, before any list is followed:
   // the lists are chains through the records, and read one after the other their cache misses
   // would not overlap (without a branch, which an empty cell would mispredict).
+  int visited = 0;  // cells so far: the place of the next one in visiting order
   const auto visit = [&](std::int32_t cell_index) {
     const std::int32_t head = lists_.first(cell_index);
     __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
     // Written at the next free entry, which the next non-empty list overwrites if this one is empty.
     block.head[static_cast<std::size_t>(block.count)] = head;
-    block.place[static_cast<std::size_t>(block.count)] = static_cast<std::uint8_t>(block.visited++);
+    block.place[static_cast<std::size_t>(block.count)] = static_cast<std::uint8_t>(visited++);
     block.count += head != CellLists::kEnd ? 1 : 0;
   };
   const int lowest_layer = D == 3 ? reach.lowest[D - 1] : 0;
   const int highest_layer = D == 3 ? reach.highest[D - 1] : 0;
   block.count = 0;
-  block.visited = 0;
   // A cell away from every face of the grid (nine in ten at N = 10⁵) sees no image: its block is
   // a fixed pattern of indices around its own, and every shift is zero.
   block.imaged = !is_interior(cell);
@@ -137,7 +137,7 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
           c -= direction * grid_.nx;
           shift[0] += image_across(0, direction, s).position[0];
         }
-        CellImage& image = block.image[static_cast<std::size_t>(block.visited)];
+        CellImage& image = block.image[static_cast<std::size_t>(visited)];
         for (int a = 0; a < D; ++a) image.position[static_cast<std::size_t>(a)] = shift[a];
         image.velocity_x = row_shift.velocity_x;
         visit(grid_.index(c, r, layer));
