@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "memory/huge_page_allocator.hpp"
+#include "memory/prefetch_lines.hpp"
 
 #include "engine/state_archive.hpp"
 
@@ -106,7 +107,7 @@ class CellLists {
     const std::int64_t last = static_cast<std::int64_t>(head_.size()) - 1;
     for (std::int64_t cell = first; cell < first + count; ++cell) {
       const std::int32_t head = head_[static_cast<std::size_t>(std::clamp<std::int64_t>(cell, 0, last))];
-      __builtin_prefetch(records.data() + std::max(head, std::int32_t{0}));
+      prefetch_lines(records.data() + std::max(head, std::int32_t{0}));
     }
   }
   std::size_t bytes() const { return head_.capacity() * sizeof(std::int32_t); }

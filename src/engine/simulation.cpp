@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "boundary/periodic_wrap.hpp"
+#include "memory/prefetch_lines.hpp"
 #include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
 #include "physics/rough_collision_rule.hpp"
@@ -350,7 +351,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     const EventKind kind = slot(i).kind();
     // The partner's record: read by a collision, and by a crossing that keeps its candidate.
     const std::int32_t j = particles_[at(i)].partner;
-    if (j >= 0) __builtin_prefetch(particles_.data() + j);
+    if (j >= 0) prefetch_lines(particles_.data() + j, prefetches_records());
     if (kind == EventKind::kCollision) __builtin_prefetch(&slot(j));  // re-scheduled below, if valid
     bool collided = false;
     bool hit_wall = false;

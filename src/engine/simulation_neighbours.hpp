@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "engine/simulation.hpp"
+#include "memory/prefetch_lines.hpp"
 
 namespace granule {
 
@@ -28,13 +29,22 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 // Forced inline: GCC 12 finds a function that only prefetches pure, and drops its call.
 template <int D>
 [[gnu::always_inline]] inline void Simulation<D>::prefetch_next_event() const {
-  queue_.prefetch_ahead();
-  const std::int32_t k = queue_.runner_up();
-  if (k < 0) return;
-  const EventSlot& next = slot(k);
-  __builtin_prefetch(particles_.data() + k);  // its partner, in the record, is fetched when it runs
+  const std::int32_t walked = queue_.prefetch_ahead();
   const std::int64_t rows = grid_.nx;
   const std::int64_t layers = rows * grid_.ny;
+  // An event of the next bucket: its record and block heads, a bucket ahead, so that they are
+  // cached when it becomes the runner-up below and its heads are read.
+  if (prefetches_records() && walked >= 0 && queue_.in_next_bucket(walked)) {
+    prefetch_lines(particles_.data() + walked);
+    const std::int64_t cell = slot(walked).cell();
+    for (std::int64_t dr = -1; dr <= 1; ++dr) lists_.prefetch_heads(cell + dr * rows - 1, 3);
+  }
+  std::int32_t k = queue_.runner_up();
+  // Only where the records are fetched ahead: where everything is cached, the walk only costs.
+  if (k < 0 && prefetches_records()) k = queue_.earliest_walked();
+  if (k < 0) return;
+  const EventSlot& next = slot(k);
+  prefetch_lines(particles_.data() + k, prefetches_records());  // its partner, in the record, is fetched when it runs
   const std::int64_t cell = next.cell();
   // Few disks, very many, or spheres: the heads of the block around its cell.  The records stay in
   // cache below about 6·10⁴ disks, where reading the heads now only costs (1–3 % at 3·10⁴ and
@@ -76,10 +86,11 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
   // The head of every cell is read, and its first record prefetched, before any list is followed:
   // the lists are chains through the records, and read one after the other their cache misses
   // would not overlap (without a branch, which an empty cell would mispredict).
+  const bool every_line = prefetches_records();  // both lines of a record out of the cache
   int visited = 0;  // cells so far: the place of the next one in visiting order
   const auto visit = [&](std::int32_t cell_index) {
     const std::int32_t head = lists_.first(cell_index);
-    __builtin_prefetch(particles_.data() + std::max(head, std::int32_t{0}));
+    prefetch_lines(particles_.data() + std::max(head, std::int32_t{0}), every_line);
     // Written at the next free entry, which the next non-empty list overwrites if this one is empty.
     block.head[static_cast<std::size_t>(block.count)] = head;
     block.place[static_cast<std::size_t>(block.count)] = static_cast<std::uint8_t>(visited++);

@@ -68,29 +68,50 @@ class EventQueue {
   }
   // A hint for the caller's prefetches: the particle whose event likely comes after the top's
   // (the earlier child of the current bucket's root; -1 when the current bucket holds only the
-  // top, whose successor is then in a list not yet read).
+  // top, whose successor is then in a list not yet read: see earliest_walked()).
   std::int32_t runner_up() const {
     if (current_.size() < 2) return -1;
     if (current_.size() == 2 || earlier(current_[1], current_[2])) return current_[1];
     return current_[2];
   }
+  // The hint when runner_up() has none (a quarter of the events of a dilute gas): the earliest
+  // event of the next bucket among the slots of its list that prefetch_ahead() has fetched, so
+  // that this look-up reads cached slots only (-1: none yet).  A list changed since the walk may
+  // not lead to ahead_ any more, hence a few steps at most.
+  std::int32_t earliest_walked() const {
+    if (ahead_bucket_ != bucket_ + 1) return -1;
+    constexpr int kMostSteps = 8;
+    std::int32_t best = -1;
+    std::int32_t p = heads_[list_of(ahead_bucket_)];
+    for (int step = 0; step < kMostSteps && p != ahead_ && p != kEnd; ++step, p = slot(p).link_) {
+      if (bucket_of(slot(p).time_) == ahead_bucket_ && (best < 0 || earlier(p, best))) best = p;
+    }
+    return best;
+  }
+  bool in_next_bucket(std::int32_t particle) const { return bucket_of(slot(particle).time_) == bucket_ + 1; }
   // A hint, no change of the order: walk the list of the bucket after the current one a step
   // further and prefetch the slot reached, so that settle() finds the list in cache.  Its walk is a
   // chain of cache misses (a fifth of the run time at N = 10⁶ was settle's); called once per
   // event, the chain is followed while the current bucket's events run.  A list that changed under
   // the walk only makes the hint a poor one: any link is a particle id or a heap position.
-  void prefetch_ahead() const {
+  // Returns the particle whose slot the step read (fetched at the last call; -1: none): if its
+  // event is still in the next bucket (in_next_bucket), the caller may start fetching what that
+  // event will read.
+  std::int32_t prefetch_ahead() const {
     const std::int64_t next = bucket_ + 1;
     std::int32_t p = kEnd;
+    std::int32_t read = -1;
     if (ahead_bucket_ != next) {
       ahead_bucket_ = next;
       p = heads_[list_of(next)];
     } else if (ahead_ != kEnd) {
+      read = ahead_;
       p = slot(ahead_).link_;
     }
     if (static_cast<std::uint32_t>(p) >= slots_.size()) p = kEnd;
     ahead_ = p;
     if (p != kEnd) __builtin_prefetch(slots_.data() + p);
+    return read;
   }
   // Every particle is where its time says and the current bucket is in heap order (the
   // GRANULE_PARANOID build checks it at every re-base).
