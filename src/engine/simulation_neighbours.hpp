@@ -30,27 +30,28 @@ inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, i
 template <int D>
 [[gnu::always_inline]] inline void Simulation<D>::prefetch_next_event() const {
   const std::int32_t walked = queue_.prefetch_ahead();
+  const bool records = prefetches_records();
   const std::int64_t rows = grid_.nx;
   const std::int64_t layers = rows * grid_.ny;
   // An event of the next bucket: its record and block heads, a bucket ahead, so that they are
-  // cached when it becomes the runner-up below and its heads are read.
-  if (prefetches_records() && walked >= 0 && queue_.in_next_bucket(walked)) {
+  // cached when it becomes the hint below and its heads are read.
+  if (records && walked >= 0 && queue_.in_next_bucket(walked)) {
     prefetch_lines(particles_.data() + walked);
     const std::int64_t cell = slot(walked).cell();
     for (std::int64_t dr = -1; dr <= 1; ++dr) lists_.prefetch_heads(cell + dr * rows - 1, 3);
   }
   std::int32_t k = queue_.runner_up();
   // Only where the records are fetched ahead: where everything is cached, the walk only costs.
-  if (k < 0 && prefetches_records()) k = queue_.earliest_walked();
+  if (k < 0 && records) k = queue_.earliest_walked();
   if (k < 0) return;
   const EventSlot& next = slot(k);
-  prefetch_lines(particles_.data() + k, prefetches_records());  // its partner, in the record, is fetched when it runs
+  prefetch_lines(particles_.data() + k, records);  // its partner, in the record, is fetched when it runs
   const std::int64_t cell = next.cell();
   // Few disks, very many, or spheres: the heads of the block around its cell.  The records stay in
   // cache below about 6·10⁴ disks, where reading the heads now only costs (1–3 % at 3·10⁴ and
   // 5·10⁴); heads out of the cache (10⁷ disks) would stall the current event when read; with 27 heads to
   // read, spheres gained nothing measurable at 1.08·10⁵ and 5·10⁵.
-  if (!prefetches_records()) {
+  if (!records) {
     for (std::int64_t dl = D == 3 ? -1 : 0; dl <= (D == 3 ? 1 : 0); ++dl) {
       for (std::int64_t dr = -1; dr <= 1; ++dr) lists_.prefetch_heads(cell + dl * layers + dr * rows - 1, 3);
     }

@@ -88,6 +88,7 @@ class EventQueue {
     }
     return best;
   }
+  // Whether a particle's event lies in the bucket after the current one (prefetch_ahead's reads).
   bool in_next_bucket(std::int32_t particle) const { return bucket_of(slot(particle).time_) == bucket_ + 1; }
   // A hint, no change of the order: walk the list of the bucket after the current one a step
   // further and prefetch the slot reached, so that settle() finds the list in cache.  Its walk is a
