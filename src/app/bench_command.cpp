@@ -65,14 +65,13 @@ bool selected(const Workload& w, const BenchOptions& o) {
 // The measurements a run makes by default, added one at a time (observer_cost below).
 enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePaths };
 
-// Times `o.collisions_per_particle` after the untimed start, in chunks of one collision per particle;
-// at each chunk the run loop's O(N) work of the chosen measurements (diagnostics sample, density
-// refresh) is done as in `granule run`.
-// The system of a workload: a unit square or cube at packing fraction ν.  Lees–Edwards workloads
+// The system of a workload: a unit square or cube (a flat channel for the wall shear) at packing fraction ν.  Lees–Edwards workloads
 // shear at the rate whose steady temperature is the initial T = 1 — in 2D from the thesis's fit
 // (3.1); in 3D from the dilute balance of viscous heating η γ² (η = 5/(16σ²)√(T/π)) and collisional
 // cooling n ω (1 − e²) T/2 (ω the Enskog collision frequency), good to a factor of order one —
 // so that the run compares per collision with the periodic workloads at the same temperature.
+constexpr double kWallShearChannelDiameters = 40.0;  // a few dissipation lengths (λ/√(1 − e²) ≈ 12σ at ν = 0.05)
+
 SystemParams workload_system(const Workload& w, int dimension, std::int64_t particles, double renumber_every) {
   SystemParams p;
   p.renumber_every = renumber_every;
@@ -82,6 +81,16 @@ SystemParams workload_system(const Workload& w, int dimension, std::int64_t part
   const auto n = static_cast<double>(particles);
   p.diameter = dimension == 2 ? std::sqrt(4.0 * w.area_fraction / (M_PI * n)) : std::cbrt(6.0 * w.area_fraction / (M_PI * n));
   p.restitution = 1.0;
+  if (w.surfaces == Surfaces::kRoughWallShear) {
+    // A channel of fixed height in diameters, its area (volume) kept 1: walls ∓U/2 apart across a
+    // unit box, U set for T ≈ 1 in uniform shear, would put a velocity difference growing as √N
+    // thermal speeds across the box (L_y/σ ∝ √N), which concentrates in hot, dilute layers a
+    // few dissipation lengths thick at the walls — events per collision grew with it, 19 at
+    // 5·10³ disks to 146 at 4·10⁵ — so the workload would not be one workload at every N.
+    p.length_y = std::min(1.0, kWallShearChannelDiameters * p.diameter);
+    p.length_x = dimension == 2 ? 1.0 / p.length_y : std::sqrt(1.0 / p.length_y);
+    p.length_z = dimension == 2 ? 1.0 : p.length_x;
+  }
   const bool rough = w.surfaces == Surfaces::kRough || w.surfaces == Surfaces::kRoughWallShear;
   if (rough) {
     p.roughness.rough = true;
