@@ -65,13 +65,13 @@ bool selected(const Workload& w, const BenchOptions& o) {
 // The measurements a run makes by default, added one at a time (observer_cost below).
 enum class Measurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePaths };
 
-// The system of a workload: a unit square or cube (a flat channel for the wall shear) at packing fraction ν.  Lees–Edwards workloads
-// shear at the rate whose steady temperature is the initial T = 1 — in 2D from the thesis's fit
-// (3.1); in 3D from the dilute balance of viscous heating η γ² (η = 5/(16σ²)√(T/π)) and collisional
-// cooling n ω (1 − e²) T/2 (ω the Enskog collision frequency), good to a factor of order one —
-// so that the run compares per collision with the periodic workloads at the same temperature.
 constexpr double kWallShearChannelDiameters = 40.0;  // a few dissipation lengths (λ/√(1 − e²) ≈ 12σ at ν = 0.05)
 
+// The system of a workload: a unit square or cube (a flat channel for the wall shear) at packing
+// fraction ν.  Lees–Edwards workloads shear at the rate whose steady temperature is the initial
+// T = 1 — in 2D from the thesis's fit (3.1); in 3D from the dilute balance of viscous heating η γ² (η = 5/(16σ²)√(T/π)) and collisional
+// cooling n ω (1 − e²) T/2 (ω the Enskog collision frequency), good to a factor of order one —
+// so that the run compares per collision with the periodic workloads at the same temperature.
 SystemParams workload_system(const Workload& w, int dimension, std::int64_t particles, double renumber_every) {
   SystemParams p;
   p.renumber_every = renumber_every;
