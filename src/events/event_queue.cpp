@@ -20,6 +20,14 @@ constexpr double kBucketLimit = 4.0e18;
 // then reaches about two mean delays ahead, and later events wait in their slot for a later turn.
 constexpr double kEventsPerBucket = 4.0;
 constexpr std::size_t kMinimumCrowd = 64;
+// A year of lists is this many chunks (a power of two); the lists hold the chunks from the current
+// bucket's on, so that a list holds one bucket's events.
+constexpr int kChunksPerYear = 8;
+// The ring of far chunks reaches about this many mean delays ahead; the rare events beyond it
+// wait in the overflow.
+constexpr std::size_t kRingMeanDelays = 32;
+// Slots fetched this many entries ahead while a chunk is taken into the lists.
+constexpr std::size_t kTakeAhead = 16;
 }  // namespace
 
 std::int64_t EventQueue::bucket_of(double time) const {
@@ -29,10 +37,19 @@ std::int64_t EventQueue::bucket_of(double time) const {
   return static_cast<std::int64_t>(q);
 }
 
-void EventQueue::reset(std::int32_t particles) {
+void EventQueue::reset(std::int32_t particles, std::size_t most_lists) {
   const auto n = static_cast<std::size_t>(particles);
   slots_.assign(n, EventSlot{});
-  heads_.assign(std::bit_ceil(std::max<std::size_t>(16, n / 2)), kEnd);
+  const std::size_t lists = std::bit_ceil(std::max<std::size_t>(16, n / 2));
+  heads_.assign(std::min(lists, std::max<std::size_t>(16, std::bit_floor(most_lists))), kEnd);
+  chunk_shift_ = std::countr_zero(heads_.size()) - std::countr_zero(static_cast<unsigned>(kChunksPerYear));
+  // Uncapped, the lists reach two mean delays ahead or more, and the few later events wait in
+  // their list for a later turn (4 bytes per particle less than a pool for every one).  A year
+  // spans about 4·lists/N mean delays (kEventsPerBucket events per bucket), a chunk an eighth.
+  keeps_far_ = heads_.size() < lists;
+  far_.reset(keeps_far_ ? n : 0, keeps_far_ ? std::bit_ceil(std::max<std::size_t>(64, 2 * kRingMeanDelays * n / heads_.size())) : 1);
+  far_events_ = 0;
+  far_from_ = keeps_far_ ? kChunksPerYear : kNever;
   current_.clear();
   current_.reserve(4 * kMinimumCrowd);
   bucket_ = 0;
@@ -64,8 +81,11 @@ void EventQueue::insert(std::int32_t particle) const {
   }
   if (bucket == bucket_) {
     push_current(particle);
-  } else {
+  } else if (const std::int64_t chunk = chunk_of(bucket); chunk < far_from_) {
     link(particle, list_of(bucket));
+  } else {
+    file_far(particle, chunk);
+    ++far_events_;
   }
 }
 
@@ -77,8 +97,13 @@ void EventQueue::remove(std::int32_t particle) const {
   const std::int64_t bucket = bucket_of(time);
   if (bucket == bucket_) {
     erase_current(static_cast<std::size_t>(slot(particle).link_));
-  } else {
+  } else if (const std::int64_t chunk = chunk_of(bucket); chunk < far_from_) {
     unlink(particle, list_of(bucket));
+  } else {
+    const std::int32_t entry = slot(particle).link_;
+    const std::int32_t moved = far_.remove(chunk, entry, far_from_);
+    if (moved >= 0) mutable_slot(moved).link_ = entry;
+    --far_events_;
   }
 }
 
@@ -136,7 +161,18 @@ void EventQueue::sift_down(std::size_t position) const {
 }
 
 void EventQueue::settle() const {
-  if (!current_.empty() || listed_ == 0) return;
+  if (!current_.empty()) return;
+  if (listed_ == 0) {
+    if (far_events_ == 0) return;
+    // Nothing in the lists: the chunks up to the next with an event come near, and the calendar
+    // moves to the first bucket of the earliest.
+    while (listed_ == 0 && current_.empty()) {
+      // One chunk more; past the overflow's earliest when the ring is empty.
+      const std::int64_t after_overflow = far_.ring_entries() > 0 ? far_from_ : far_.overflow_first();
+      bring_near(std::max(far_from_, after_overflow) + 1);
+    }
+    if (current_.empty()) bucket_ = std::max(bucket_, ((far_from_ - 1) << chunk_shift_) - 1);
+  }
   const std::int64_t lists = static_cast<std::int64_t>(heads_.size());
   for (std::int64_t step = 0; current_.empty(); ++step) {
     if (step == lists) {
@@ -148,6 +184,7 @@ void EventQueue::settle() const {
       bucket_ = earliest - 1;
     }
     ++bucket_;
+    bring_near(chunk_of(bucket_) + kChunksPerYear);
     // Move this bucket's events from its list to the heap, unlinking them on the way.
     std::int32_t* link = &heads_[list_of(bucket_)];
     while (*link != kEnd) {
@@ -161,6 +198,45 @@ void EventQueue::settle() const {
       }
     }
   }
+}
+
+void EventQueue::bring_near(std::int64_t target) const {
+  while (far_from_ < target) {
+    if (far_.ring_entries() == 0) {
+      // The ring's chunks are empty: on to the target, or to the earliest chunk of the overflow.
+      far_from_ = std::max(far_from_, std::min(target, far_.overflow_first()));
+      refile_overflow();
+      continue;
+    }
+    take_chunk();
+  }
+}
+
+void EventQueue::take_chunk() const {
+  const std::int64_t chunk = far_from_++;
+  far_.drain(chunk, [this](std::span<const std::int32_t> entries) {
+    // The slots are anywhere in memory: fetched many at once, where one at a time would wait.
+    for (const std::int32_t p : entries.first(std::min(entries.size(), kTakeAhead))) __builtin_prefetch(slots_.data() + p);
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      if (k + kTakeAhead < entries.size()) __builtin_prefetch(slots_.data() + entries[k + kTakeAhead]);
+      const std::int32_t p = entries[k];
+      const std::int64_t bucket = bucket_of(slot(p).time_);
+      --far_events_;
+      if (bucket == bucket_) {
+        push_current(p);
+      } else {
+        link(p, list_of(bucket));
+      }
+    }
+  });
+  refile_overflow();
+}
+
+void EventQueue::refile_overflow() const {
+  if (far_.overflow_first() == FarChunks::kNone || !far_.in_ring(far_.overflow_first(), far_from_)) return;
+  far_.drain_overflow([this](std::span<const std::int32_t> entries) {
+    for (const std::int32_t p : entries) file_far(p, chunk_of(bucket_of(slot(p).time_)));
+  });
 }
 
 void EventQueue::rebuild() const {
@@ -182,13 +258,17 @@ void EventQueue::rebuild() const {
   current_.clear();
   listed_ = 0;
   bucket_ = std::isfinite(earliest) ? bucket_of(earliest) : 0;
+  far_.clear();
+  far_events_ = 0;
+  if (keeps_far_) far_from_ = chunk_of(bucket_) + kChunksPerYear;
   for (std::size_t i = 0; i < slots_.size(); ++i) insert(static_cast<std::int32_t>(i));
   crowded_ = std::max(kMinimumCrowd, 2 * current_.size());
   ahead_bucket_ = kNoBucket;  // the lists are new: the walk starts again at a head
 }
 
 bool EventQueue::is_consistent() const {
-  // Each particle with a finite time is met once, in its bucket's list or in the heap; no other is.
+  // Each particle with a finite time is met once: in its bucket's list, in the heap, or far; no
+  // other is.
   std::vector<char> met(slots_.size(), 0);
   const auto meet = [&](std::int32_t p) {
     return p >= 0 && static_cast<std::size_t>(p) < slots_.size() && slot(p).time_ != kInf && met[static_cast<std::size_t>(p)]++ == 0;
@@ -199,7 +279,7 @@ bool EventQueue::is_consistent() const {
       if (!meet(p)) return false;
       ++listed;
       const std::int64_t bucket = bucket_of(slot(p).time_);
-      if (list_of(bucket) != list || !(bucket > bucket_)) return false;
+      if (list_of(bucket) != list || !(bucket > bucket_) || chunk_of(bucket) >= far_from_) return false;
     }
   }
   if (listed != listed_) return false;
@@ -208,6 +288,29 @@ bool EventQueue::is_consistent() const {
     if (!meet(p) || slot(p).link_ != static_cast<std::int32_t>(k) || bucket_of(slot(p).time_) != bucket_) return false;
     if (k > 0 && earlier(p, current_[(k - 1) / 2])) return false;
   }
+  // A far event is in the ring's bag of its chunk, or in the overflow when the ring does not
+  // reach its chunk, at the entry its link names.
+  const auto ring = static_cast<std::int64_t>(far_.ring_chunks());
+  std::int64_t far = 0;
+  bool filed_right = true;
+  const auto check_bag = [&](std::int64_t bag) {
+    far_.for_each(bag, [&](std::int32_t entry) {
+      const std::int32_t p = far_.particle_at(entry);
+      ++far;
+      if (!meet(p) || slot(p).link_ != entry) {
+        filed_right = false;
+        return;
+      }
+      const std::int64_t chunk = chunk_of(bucket_of(slot(p).time_));
+      if (bag == FarChunks::kNone ? chunk < far_from_ + ring || chunk < far_.overflow_first() : chunk != bag) filed_right = false;
+    });
+  };
+  if (keeps_far_) {
+    for (std::int64_t chunk = far_from_; chunk < far_from_ + ring; ++chunk) check_bag(chunk);
+    if (far != far_.ring_entries()) return false;
+    check_bag(FarChunks::kNone);
+  }
+  if (!filed_right || far != far_events_) return false;
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     if ((slots_[i].time_ != kInf) != (met[i] == 1)) return false;
   }

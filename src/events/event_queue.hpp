@@ -4,11 +4,17 @@
 // where the binary heap of every particle it replaced cost O(log N) cache misses (a quarter of the
 // run time at N = 10⁵: docs/performance.md).
 //
+// The calendar's lists cover one year ahead of the current bucket, and there are at most
+// kMostLists of them, so that their heads stay in the cache; events beyond the year wait unsorted
+// in FarChunks (Paul's overflow, J. Comput. Phys. 221, 615 (2007)), filed by chunks of an eighth
+// of a year, and are linked into the lists a chunk at a time, seven chunks before the current
+// bucket reaches them.
+//
 // The queue holds each particle's EventSlot: its time and link are the queue's, the rest is the
 // engine's, so that an event touches one slot.  Bucket lists are singly linked: a list holds about
 // two events, and the walk to a particle's predecessor costs about what a back link's update did,
 // without its 4 bytes.  Where a particle is (no event, the current bucket, a bucket list) follows
-// from its time and the current bucket.
+// from its time, the current bucket and the first far chunk; a far event's link is its entry there.
 //
 // Ties are broken by the particle's user id (set_tie_order: the engine renumbers its particles
 // along the cells, and the order of pops must not follow), so the order of pops is a function of
@@ -26,14 +32,21 @@
 
 #include "engine/state_archive.hpp"
 #include "events/event_slot.hpp"
+#include "events/far_chunks.hpp"
 #include "memory/huge_page_allocator.hpp"
 
 namespace granule {
 
 class EventQueue {
  public:
-  // All particles present, at time +inf, with default slots.
-  void reset(std::int32_t particles);
+  // At most this many calendar lists by default: 1 MiB of heads, which stay cached, where a head
+  // per two particles was 33.5 MB at 10⁷ and a cache miss at every re-scheduling
+  // (docs/performance.md).
+  static constexpr std::size_t kMostLists = std::size_t{1} << 18;
+
+  // All particles present, at time +inf, with default slots; a list per two particles, at least
+  // 16 and at most `most_lists` (a power of two).
+  void reset(std::int32_t particles, std::size_t most_lists = kMostLists);
   // A particle's slot: the engine's fields are free to change; the time changes through update().
   EventSlot& slot(std::int32_t particle) { return slots_[static_cast<std::size_t>(particle)]; }
   const EventSlot& slot(std::int32_t particle) const { return slots_[static_cast<std::size_t>(particle)]; }
@@ -62,7 +75,7 @@ class EventQueue {
     const double time = slot(particle).time_;
     if (time == std::numeric_limits<double>::infinity()) return;
     const std::int64_t bucket = bucket_of(time);
-    if (bucket == bucket_) return;
+    if (bucket == bucket_ || chunk_of(bucket) >= far_from_) return;
     const std::int32_t first = heads_[list_of(bucket)];
     if (first != kEnd && first != particle) __builtin_prefetch(slots_.data() + first);
   }
@@ -124,15 +137,18 @@ class EventQueue {
   // (whose other fields the engine restores).
   void restore(const StateArchive& archive, const std::string& prefix);
   std::size_t bytes() const {
-    return slots_.capacity() * sizeof(EventSlot) + (heads_.capacity() + current_.capacity()) * sizeof(std::int32_t);
+    return slots_.capacity() * sizeof(EventSlot) +
+           (heads_.capacity() + current_.capacity()) * sizeof(std::int32_t) + far_.bytes();
   }
 
  private:
   static constexpr std::int32_t kEnd = -1;  // the end of a bucket list
   static constexpr std::int64_t kNoBucket = std::numeric_limits<std::int64_t>::min();
+  static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();  // no chunk is far
 
   std::int64_t bucket_of(double time) const;
   std::size_t list_of(std::int64_t bucket) const { return static_cast<std::size_t>(bucket) & (heads_.size() - 1); }
+  std::int64_t chunk_of(std::int64_t bucket) const { return bucket >> chunk_shift_; }
   bool earlier(std::int32_t a, std::int32_t b) const {
     const double ta = slot(a).time_;
     const double tb = slot(b).time_;
@@ -157,6 +173,16 @@ class EventQueue {
   // Make the current bucket the earliest non-empty one (the calendar moves lazily, when the top
   // is asked for, so that updates at times before a jump never meet a calendar ahead of them).
   void settle() const;
+  // Make every chunk before `target` near (far_from_ = target), taking each one's far events into
+  // the lists; chunks with nothing in them are skipped at once.
+  void bring_near(std::int64_t target) const;
+  // The chunk far_from_: its events into the lists (or the current bucket).
+  void take_chunk() const;
+  // The overflow's events filed again, into the ring where it now reaches them.
+  void refile_overflow() const;
+  void file_far(std::int32_t particle, std::int64_t chunk) const {
+    mutable_slot(particle).link_ = far_.file(chunk, particle, far_from_);
+  }
   // Re-distribute every event with a bucket width fitted to the present spread of times.
   void rebuild() const;
 
@@ -170,6 +196,11 @@ class EventQueue {
   // per event.  Any monotonic map of times to buckets gives the same order of pops.
   mutable double buckets_per_time_ = 1.0;
   mutable std::int64_t listed_ = 0;             // events in bucket lists
+  mutable FarChunks far_;                       // the events of chunks from far_from_ on
+  bool keeps_far_ = false;                      // whether the lists are capped and far_ used
+  mutable std::int64_t far_from_ = kNever;      // the first chunk not in the lists
+  mutable std::int64_t far_events_ = 0;         // events in far_
+  int chunk_shift_ = 1;                         // a chunk is 2^chunk_shift_ buckets
   mutable std::size_t crowded_ = 0;             // current_'s size that asks for a new width
   mutable std::int64_t ahead_bucket_ = kNoBucket;  // the bucket whose list prefetch_ahead() walks
   mutable std::int32_t ahead_ = kEnd;           // and the last slot it prefetched there

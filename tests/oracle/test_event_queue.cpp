@@ -94,14 +94,15 @@ struct RunFigures {
   std::vector<std::int32_t> tops;  // the queue's top after every operation (for determinism)
 };
 
-// Applies `operations` random operations to a queue of `particles`, checking it against the
-// reference after each; records the sequence of tops.
-RunFigures exercise(std::int32_t particles, std::uint64_t seed, std::int64_t operations) {
+// Applies `operations` random operations to a queue of `particles` (with at most `most_lists`
+// calendar lists), checking it against the reference after each; records the sequence of tops.
+RunFigures exercise(std::int32_t particles, std::uint64_t seed, std::int64_t operations,
+                    std::size_t most_lists = EventQueue::kMostLists) {
   EventQueue queue;
   ReferenceQueue reference;
   TimeSource times(seed);
   Random& random = times.random();
-  queue.reset(particles);
+  queue.reset(particles, most_lists);
   reference.reset(particles);
   RunFigures figures;
   for (std::int64_t op = 0; op < operations; ++op) {
@@ -132,7 +133,7 @@ RunFigures exercise(std::int32_t particles, std::uint64_t seed, std::int64_t ope
       reference.shift_times(delta);
       ++figures.shifts;
     } else {
-      queue.reset(particles);
+      queue.reset(particles, most_lists);
       reference.reset(particles);
     }
     ++figures.operations;
@@ -166,6 +167,51 @@ TEST(EventQueueOracle, EveryTopMatchesTheSortedReference) {
     if (c.particles > 2) {
       EXPECT_GT(f.ties_at_top, 100) << "the ties were not exercised";
     }
+  }
+}
+
+// With the calendar's lists capped far below one per two particles (as at 10⁷ particles, where
+// they are capped at EventQueue::kMostLists), most events wait in the far chunks, and the order
+// must not change.
+TEST(EventQueueOracle, EveryTopMatchesTheReferenceWithFewLists) {
+  for (const std::int32_t particles : {100, 1000, 4096}) {
+    const RunFigures f = exercise(particles, 20 + static_cast<std::uint64_t>(particles), 120000, 16);
+    ASSERT_FALSE(HasFailure()) << "N = " << particles;
+    EXPECT_GT(f.ties_at_top, 100) << "the ties were not exercised";
+  }
+}
+
+// The engine's regime with capped lists: pops re-scheduled an exponential delay ahead, partners
+// re-scheduled at random, a few events a hundred mean delays ahead (beyond the ring of far
+// chunks, in the overflow) while the ring stays busy, and re-bases; the top is checked after every
+// operation.
+TEST(EventQueueOracle, EngineRegimeWithFewLists) {
+  constexpr std::int32_t kParticles = 4000;
+  constexpr std::int64_t kOperations = 300000;
+  Random random(31);
+  EventQueue queue;
+  ReferenceQueue reference;
+  queue.reset(kParticles, 64);
+  reference.reset(kParticles);
+  const auto delay = [&] { return -std::log(1.0 - random.uniform()) * (random.below(100) == 0 ? 100.0 : 1.0); };
+  for (std::int32_t i = 0; i < kParticles; ++i) {
+    const double t = delay();
+    queue.update(i, t);
+    reference.update(i, t);
+  }
+  for (std::int64_t op = 0; op < kOperations; ++op) {
+    const double now = queue.top_time();
+    const std::int32_t p = random.below(10) < 7 ? queue.top() : static_cast<std::int32_t>(random.below(kParticles));
+    const double t = now + delay();
+    queue.update(p, t);
+    reference.update(p, t);
+    if (op % 50000 == 49999) {
+      queue.shift_times(queue.top_time());
+      reference.shift_times(reference.smallest());
+    }
+    ASSERT_EQ(queue.top_time(), reference.smallest()) << "operation " << op;
+    ASSERT_EQ(queue.top(), reference.first_particle()) << "operation " << op;
+    if (op % 5000 == 0) ASSERT_TRUE(queue.is_consistent()) << "operation " << op;
   }
 }
 
