@@ -39,10 +39,10 @@ namespace granule {
 
 class EventQueue {
  public:
-  // At most this many calendar lists by default: 1 MiB of heads, which stay cached, where a head
-  // per two particles was 33.5 MB at 10⁷ and a cache miss at every re-scheduling
-  // (docs/performance.md).
-  static constexpr std::size_t kMostLists = std::size_t{1} << 18;
+  // At most this many calendar lists by default: 256 KiB of heads, which stay cached, where a head
+  // per two particles was 33.5 MB at 10⁷ and a cache miss at every re-scheduling (2¹⁶ ran 1.05×
+  // and 1.07× as fast as 2¹⁸ at 10⁷ and 10⁶: docs/performance.md).
+  static constexpr std::size_t kMostLists = std::size_t{1} << 16;
 
   // All particles present, at time +inf, with default slots; a list per two particles, at least
   // 16 and at most `most_lists` (a power of two).

@@ -1,6 +1,6 @@
 // The events beyond the calendar's year: Paul's unsorted overflow (G. Paul, J. Comput. Phys. 221,
 // 615 (2007)), here filed by chunk of buckets.  A chunk is a bag of particle ids in no order:
-// filing is an append to one of a few thousand bags whose ends stay cached, where linking the
+// filing is an append to the open block of one of thousands of bags, where linking the
 // event into its calendar list was a cache miss on that list's head once the heads outgrew the
 // cache (33.5 MB of them at 10⁷ disks: docs/performance.md).
 //
