@@ -211,7 +211,9 @@ TEST(EventQueueOracle, EngineRegimeWithFewLists) {
     }
     ASSERT_EQ(queue.top_time(), reference.smallest()) << "operation " << op;
     ASSERT_EQ(queue.top(), reference.first_particle()) << "operation " << op;
-    if (op % 5000 == 0) ASSERT_TRUE(queue.is_consistent()) << "operation " << op;
+    if (op % 5000 == 0) {
+      ASSERT_TRUE(queue.is_consistent()) << "operation " << op;
+    }
   }
 }
 
