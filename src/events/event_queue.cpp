@@ -219,14 +219,8 @@ void EventQueue::take_chunk() const {
     for (const std::int32_t p : entries.first(std::min(entries.size(), kTakeAhead))) __builtin_prefetch(slots_.data() + p);
     for (std::size_t k = 0; k < entries.size(); ++k) {
       if (k + kTakeAhead < entries.size()) __builtin_prefetch(slots_.data() + entries[k + kTakeAhead]);
-      const std::int32_t p = entries[k];
-      const std::int64_t bucket = bucket_of(slot(p).time_);
       --far_events_;
-      if (bucket == bucket_) {
-        push_current(p);
-      } else {
-        link(p, list_of(bucket));
-      }
+      insert(entries[k]);  // the chunk is near now: to the current bucket or to a list
     }
   });
   refile_overflow();
