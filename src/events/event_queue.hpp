@@ -12,8 +12,9 @@
 //
 // The queue holds each particle's EventSlot: its time and link are the queue's, the rest is the
 // engine's, so that an event touches one slot.  Bucket lists are singly linked: a list holds about
-// two events, and the walk to a particle's predecessor costs about what a back link's update did,
-// without its 4 bytes.  Where a particle is (no event, the current bucket, a bucket list) follows
+// two events, and the walk to a particle's predecessor costs about what a back link's update does
+// (measured again at 10⁶ disks: level at ν = 0.5, slower at ν = 0.05; docs/performance.md), without
+// its 4 bytes.  Where a particle is (no event, the current bucket, a bucket list) follows
 // from its time, the current bucket and the first far chunk; a far event's link is its entry there.
 //
 // Ties are broken by the particle's user id (set_tie_order: the engine renumbers its particles
