@@ -300,6 +300,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
   }
   queue_.prefetch_removal(j);
   predict(i);
+  queue_.prefetch_removal(j, 2);  // the first slot has arrived meanwhile
   predict(j);
   return true;
 }

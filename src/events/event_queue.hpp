@@ -69,16 +69,18 @@ class EventQueue {
   }
   double top_time() const { return slot(top()).time_; }
   double time_of(std::int32_t particle) const { return slot(particle).time_; }
-  // A hint, no change of state: start fetching the first slot of the list that re-scheduling
-  // `particle` will walk (the partner of a collision leaves its list while the other's prediction
-  // runs; the walk is a chain of cache misses otherwise).
-  void prefetch_removal(std::int32_t particle) const {
+  // A hint, no change of state: start fetching the slot `depth` steps down the list that
+  // re-scheduling `particle` will walk (the partner of a collision leaves its list while the
+  // other's prediction runs; the walk is a chain of cache misses otherwise).  The steps before it
+  // are read: call with depth 1, then 2 once that slot has had time to arrive.
+  void prefetch_removal(std::int32_t particle, int depth = 1) const {
     const double time = slot(particle).time_;
     if (time == std::numeric_limits<double>::infinity()) return;
     const std::int64_t bucket = bucket_of(time);
     if (bucket == bucket_ || chunk_of(bucket) >= far_from_) return;
-    const std::int32_t first = heads_[list_of(bucket)];
-    if (first != kEnd && first != particle) __builtin_prefetch(slots_.data() + first);
+    std::int32_t p = heads_[list_of(bucket)];
+    for (int step = 1; step < depth && p != kEnd && p != particle; ++step) p = slot(p).link_;
+    if (p != kEnd && p != particle) __builtin_prefetch(slots_.data() + p);
   }
   // A hint for the caller's prefetches: the particle whose event likely comes after the top's
   // (the earlier child of the current bucket's root; -1 when the current bucket holds only the
