@@ -70,6 +70,14 @@ struct GoldenCase {
   int dimension = 2;      // area_fraction is then the packing fraction
   double size_ratio = 1.0;                // ≠ 1: a binary mixture, half of the grains this much larger
   double tangential_restitution = -1.0;   // > −1: rough grains (β), with spin
+  // Flat walls instead of images on some axes, and what they and a uniform gravity add.
+  struct Surfaces {
+    std::array<bool, 3> walls{};
+    std::array<double, 3> gravity{};
+    double wall_restitution = 1.0;
+    double wall_tangential_restitution = -1.0;  // > −1: rough walls
+    double wall_velocity = 0.0;                 // y walls moving along x at ∓U/2 (a wall-driven shear)
+  } surfaces{};
 };
 
 // The run of a case, its engine renumbering its particles every `renumber_every` events per
@@ -99,6 +107,15 @@ GoldenRun final_state(const GoldenCase& k, double renumber_every) {
     p.roughness.rough = true;
     p.roughness.inertia_factor = D == 3 ? 0.4 : 0.5;
   }
+  p.walls = k.surfaces.walls;
+  p.gravity = k.surfaces.gravity;
+  for (std::size_t face = 0; face < p.wall.size(); ++face) {
+    if (!p.walls[face / 2]) continue;
+    p.wall[face].restitution = k.surfaces.wall_restitution;
+    p.wall[face].tangential_restitution = k.surfaces.wall_tangential_restitution;
+  }
+  p.wall[2].velocity[0] = -0.5 * k.surfaces.wall_velocity;
+  p.wall[3].velocity[0] = 0.5 * k.surfaces.wall_velocity;
   if (k.protocol) {
     p.shear_history.ramp_time = 0.05;
     p.shear_history.oscillation = ShearOscillation{0.3 * k.shear_velocity, 0.02, 0.05, 5.0};
@@ -172,7 +189,15 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"rough_spheres", 1500, 0.25, 0.9, 0.0, 1e-7, 30.0, 11, 0x646e4d9b927da56bULL, false, 3, 1.0, 0.3},
                       // Enough disks for the engine to prefetch records one event ahead
                       // (Simulation::kPrefetchRecordsFrom): a hint that must change nothing.
-                      GoldenCase{"many_disks_free_cooling_tc", 66000, 0.05, 0.9, 0.0, 1e-7, 30.0, 17, 0xb07854f10a82be41ULL}),
+                      GoldenCase{"many_disks_free_cooling_tc", 66000, 0.05, 0.9, 0.0, 1e-7, 30.0, 17, 0xb07854f10a82be41ULL},
+                      // Walls, gravity and rough walls: a closed box under gravity, a wall-driven
+                      // shear of rough disks between rough walls, rough spheres on a rough floor.
+                      GoldenCase{"disks_box_gravity_tc", 1500, 0.1, 0.95, 0.0, 1e-6, 30.0, 21, 0x9575a6888bcdae90ULL, false, 2, 1.0, -1.0,
+                                 {{true, true, false}, {0.0, -0.5, 0.0}, 0.9}},
+                      GoldenCase{"rough_disks_rough_walls_couette", 1500, 0.2, 0.9, 0.0, 1e-6, 30.0, 22, 0x74625fb342789f1bULL, false, 2, 1.0, 0.4,
+                                 {{false, true, false}, {}, 0.9, 0.5, 5.0}},
+                      GoldenCase{"rough_spheres_rough_floor_gravity", 1500, 0.2, 0.9, 0.0, 1e-7, 30.0, 23, 0xbe4693e8c492598cULL, false, 3, 1.0, 0.3,
+                                 {{false, false, true}, {0.0, 0.0, -0.5}, 0.9, 0.2}}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace
