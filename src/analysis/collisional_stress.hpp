@@ -30,7 +30,7 @@
 // interval closes (collisional_heat_flux), with the V of the caller's choosing (the interval's
 // mean V(r)).
 //
-// In 2D every value is what it was before spheres existed, operation for operation: the sums are
+// In 2D every value is the plain 2D computation, operation for operation: the sums are
 // Σ J k̂ k̂ (σ_ij/σ = 1 is not multiplied in) scaled by σ/(V t).
 //
 // Rough grains: the momentum given to particle 2 is P = J k̂ + P_t (the record's
