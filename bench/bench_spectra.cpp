@@ -1,5 +1,6 @@
-// Spectra of mass and momentum (src/spectra): the fast gridded-FFT method at the target
-// (N = 10^6 particles, all modes |l|, |m| ≤ 128, < 2 s on one core) and the exact sums for scale.
+// Spectra of mass and momentum (src/spectra): the fast gridded-FFT method at the size it is meant
+// for (N = 10^6 particles, all modes |l|, |m| ≤ 128, in under 2 s on one core) and the exact sums
+// for scale.
 #include <benchmark/benchmark.h>
 
 #include "init/random.hpp"

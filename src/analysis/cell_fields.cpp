@@ -38,8 +38,8 @@ namespace {
 
 constexpr const char* kSpinMomentNames[3] = {"spin_x", "spin_y", "spin_z"};
 
-// The moment arrays with their checkpoint names, in one list: the 2D set (a 2D checkpoint is what
-// it was before 3D existed), the z components in 3D, Σm when masses were seen.
+// The moment arrays with their checkpoint names, in one list: the 2D set (all a 2D checkpoint
+// holds), the z components in 3D, Σm when masses were seen.
 template <typename Moments>
 auto moment_arrays(Moments& m) {
   std::vector<std::pair<const char*, decltype(&m.count)>> arrays{

@@ -5,9 +5,9 @@
 // vorticity and the kinetic heat flux q^(k) = Σ ½ m|c|² c / cell, c = v − V(r)
 // (docs/macrostructure.md).  Unit masses unless the configuration carries masses (polydisperse):
 // then V, τ^(k), T and q^(k) are mass-weighted and ρ stays the number density.  In 2D with unit
-// masses every value is computed as before 3D existed, operation for operation.
+// masses no 3D or mass term enters: every value is the plain 2D computation, operation for operation.
 //
-// Rough grains (issue 15) add the mean angular velocity Ω(r) = Σ I ω / Σ I (per component: ω_z
+// Rough grains add the mean angular velocity Ω(r) = Σ I ω / Σ I (per component: ω_z
 // of disks, ω_x, ω_y, ω_z of spheres) and the rotational temperature T_rot(r) = Σ I|ω − Ω|² /
 // (d_rot · count), d_rot = 1 for disks and 3 for spheres, I = q m σ²/4 — the rotational analogue
 // of (1.3), the spin fluctuation about the cell's mean spin.

@@ -30,10 +30,10 @@
 // interval closes (collisional_heat_flux), with the V of the caller's choosing (the interval's
 // mean V(r)).
 //
-// In 2D every value is what it was before spheres existed, operation for operation: the sums are
+// In 2D every value is the plain 2D computation, operation for operation: the sums are
 // Σ J k̂ k̂ (σ_ij/σ = 1 is not multiplied in) scaled by σ/(V t).
 //
-// Rough grains (issue 15): the momentum given to particle 2 is P = J k̂ + P_t (the record's
+// Rough grains: the momentum given to particle 2 is P = J k̂ + P_t (the record's
 // tangential_impulse), so τ^(c)_ab = 1/(V t) Σ σ_ij k̂_a P_b — no longer symmetric: its entries below
 // the diagonal (yx, zx, zy) are kept as well, τ_yx being the flux of x momentum along y (what a y
 // wall feels).  The trace, and the pressure, are unchanged (P_t ⊥ k̂).  The energy carried is the

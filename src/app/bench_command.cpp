@@ -1,9 +1,9 @@
-// The benchmark workloads: in 2D (issue 3) elastic disks at ν = 0.05 and 0.5, free cooling at
-// e = 0.9 and Lees–Edwards shear at e = 0.8, N = 10^5 unless --particles says otherwise; in 3D
-// (issue 14) elastic spheres at φ = 0.30 and 0.05, free cooling at e = 0.9 and Lees–Edwards shear
-// at e = 0.8 (φ = 0.05), N = 108000 unless --particles-3d says otherwise; and in both (issue 15)
-// rough free cooling (e = 0.9, β = 0.5), an elastic gas in gravity between a floor and a ceiling,
-// and a rough gas sheared by walls moving at ∓U/2 (e = e_w = 0.9, β = β_w = 0.5), at ν = 0.05.
+// The benchmark workloads: in 2D elastic disks at ν = 0.05 and 0.5, free cooling at e = 0.9 and
+// Lees–Edwards shear at e = 0.8, N = 10^5 unless --particles says otherwise; in 3D elastic spheres
+// at φ = 0.30 and 0.05, free cooling at e = 0.9 and Lees–Edwards shear at e = 0.8 (φ = 0.05),
+// N = 108000 unless --particles-3d says otherwise; and in both rough free cooling (e = 0.9,
+// β = 0.5), an elastic gas in gravity between a floor and a ceiling, and a rough gas sheared by
+// walls moving at ∓U/2 (e = e_w = 0.9, β = β_w = 0.5) in a channel 40 diameters high, at ν = 0.05.
 #include "app/bench_command.hpp"
 
 #include <fmt/format.h>

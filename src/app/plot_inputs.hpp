@@ -32,7 +32,7 @@ std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames);
 // The root attribute `format` of an HDF5 file ("" without one); throws BadPlotInput when `path` is not HDF5.
 std::string hdf5_format(const std::string& path);
 // The root attribute `dimension` of a snapshot or fields file: 3 for a run of spheres, 2 (also when
-// absent, as in files written before 3D existed) for disks.  Throws BadPlotInput when `path` is not HDF5.
+// absent: 2D files need not carry it) for disks.  Throws BadPlotInput when `path` is not HDF5.
 int hdf5_dimension(const std::string& path);
 // Throws BadPlotInput unless `path` is an HDF5 file whose root attribute `format` is `format`.
 void require_hdf5_format(const std::string& path, const char* format, const char* producer);

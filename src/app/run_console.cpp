@@ -14,7 +14,7 @@ namespace granule::app {
 
 namespace {
 
-// Rough grains, walls and gravity (issue 15), one line each when present.
+// Rough grains, walls and gravity, one line each when present.
 void print_grains_walls_gravity(const RunConfig& config) {
   const SystemParams& s = config.system;
   const int d = s.dimension;

@@ -20,7 +20,7 @@ const char* stop_text(StopReason reason) {
 
 namespace {
 
-// Issue 15's parameters: rough grains (β, q, μ, the initial T_rot of a new gas; null when
+// The parameters of rough grains, walls and gravity: rough grains (β, q, μ, the initial T_rot of a new gas; null when
 // smooth), the walls (one entry per wall, empty without) and g.
 template <int D>
 void describe_grains_walls_gravity(const RunConfig& config, nlohmann::json& j) {

@@ -4,7 +4,7 @@
 // ½⟨v'²⟩ for unit-mass disks, eq 1.3), zero total momentum Σ m_i v_i, and for Lees–Edwards the
 // linear shear profile u(y) = γ (y − L_y/2) along x added, γ = U/L_y with U the
 // `profile_velocity` (default: params.shear_velocity; 0 gives the static gas of thesis §4.3).
-// With walls (issue 15) every centre starts at least its own radius from each wall, and between
+// With walls every centre starts at least its own radius from each wall, and between
 // moving y walls the profile runs linearly from one wall's velocity to the other's; rough grains
 // get Gaussian angular velocities, drawn after everything else so that smooth runs keep their
 // initial states bit for bit.

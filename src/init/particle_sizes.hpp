@@ -1,4 +1,4 @@
-// Diameters and masses of polydisperse runs (issue 14), and the packing fraction they give.
+// Diameters and masses of polydisperse runs, and the packing fraction they give.
 // Diameters are σ_i = σ̄ r_i: a reference diameter σ̄ (system.diameter, or solved from the packing
 // fraction) times relative sizes r_i drawn from the run's seed on a stream of their own, so that
 // they are known before placement and the same on every platform.  The realised diameters are

@@ -193,7 +193,7 @@ void write_collision_statistics(const std::string& dir, const CollisionStatistic
   }
   write_attribute(file, "density_cells_nx", H5T_NATIVE_INT, &m.density_grid.nx);
   write_attribute(file, "density_cells_ny", H5T_NATIVE_INT, &m.density_grid.ny);
-  if (D == 3) {  // a 2D file has exactly the attributes it had before spheres existed
+  if (D == 3) {  // a 2D file has no 3D attribute, not even `dimension`
     write_attribute(file, "dimension", H5T_NATIVE_INT, &m.system.dimension);
     write_double(file, "length_z", m.system.length_z);
     write_attribute(file, "density_cells_nz", H5T_NATIVE_INT, &m.density_grid.nz);

@@ -3,7 +3,7 @@
 // tables as CSV (impact_parameters.csv, free_paths.csv).  All files are written atomically; a
 // failure throws IoError and publishes nothing incomplete.  A 3D file adds what says it is one
 // (dimension, length_z, the variables (b/σ)² and cos θ, the isotropy distance, the Boltzmann and
-// Enskog mean free paths); a 2D file is what it was before spheres existed.
+// Enskog mean free paths); a 2D file carries none of these.
 #pragma once
 
 #include <string>

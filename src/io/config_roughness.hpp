@@ -1,4 +1,4 @@
-// Rough grains (issue 15): the [system] keys of the collision model with spin — tangential
+// Rough grains: the [system] keys of the collision model with spin — tangential
 // restitution β, inertia factor q (I = q m σ²/4), Coulomb friction μ — and the rotational
 // temperature of their initial spins in [initial].
 #pragma once

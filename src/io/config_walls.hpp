@@ -1,5 +1,5 @@
-// The flat walls of [boundary] (kind = "walls") and the uniform gravity of [system] (issue 15,
-// ARCHITECTURE.md "Spin, walls and gravity"): which axes end in walls, each wall's normal and
+// The flat walls of [boundary] (kind = "walls") and the uniform gravity of [system]
+// (ARCHITECTURE.md, "Spin, walls and gravity"): which axes end in walls, each wall's normal and
 // tangential restitution, the wall velocities of a wall-driven shear, and g.
 #pragma once
 

@@ -134,7 +134,7 @@ FieldsWriter::FieldsWriter(const std::string& path, const FieldGrid& grid, const
   write_attribute(f, "ny", H5T_NATIVE_INT, &grid.ny);
   write_attribute(f, "length_x", H5T_NATIVE_DOUBLE, &grid.length_x);
   write_attribute(f, "length_y", H5T_NATIVE_DOUBLE, &grid.length_y);
-  if (grid.dimension == 3) {  // a 2D file has exactly the attributes it had before 3D existed
+  if (grid.dimension == 3) {  // a 2D file has no 3D attribute, not even `dimension`
     write_attribute(f, "dimension", H5T_NATIVE_INT, &grid.dimension);
     write_attribute(f, "nz", H5T_NATIVE_INT, &grid.nz);
     write_attribute(f, "length_z", H5T_NATIVE_DOUBLE, &grid.length_z);

@@ -17,8 +17,8 @@ using namespace h5;
 constexpr const char* kFormat = "granule-snapshots";
 // 2: per-frame shear_velocity and strain_at_reference; 3: `dimension`, rows of d in positions and
 // velocities, `packing_fraction`, per-particle `diameters` and `masses` (polydisperse runs).
-// Files of version 2 (no `dimension`) are read as 2D.  Issue 15 (rough grains, walls, gravity)
-// adds attributes and a `spins` dataset only to the files of runs that have them: their presence
+// Files of version 2 (no `dimension`) are read as 2D.  Rough grains, walls and gravity
+// add attributes and a `spins` dataset only to the files of runs that have them: their presence
 // says what the file holds, so the version stays 3 and files of other runs keep their bytes.
 constexpr int kFormatVersion = 3;
 
@@ -63,11 +63,11 @@ void deinterleave(const std::vector<double>& rows, std::size_t n, int components
 template <typename State>
 auto& spin_column(State& state, int k) { return state.spin(state.dimension == 3 ? k : 2); }
 
-// The issue-15 parameters as root attributes, each group only when the run has it: roughness
+// The parameters of rough grains, walls and gravity as root attributes, each group only when the run has it: roughness
 // (`tangential_restitution` β, `inertia_factor` q, `friction` μ, +inf without a Coulomb limit),
 // walls (`walls` [x, y, z] 0/1, and per face 2·axis + side `wall_restitution`,
 // `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3)), `gravity` [g_x, g_y, g_z].
-void write_issue15_attributes(hid_t f, const SystemParams& p) {
+void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
   if (p.roughness.rough) {
     write_attribute(f, "tangential_restitution", H5T_NATIVE_DOUBLE, &p.roughness.tangential_restitution);
     write_attribute(f, "inertia_factor", H5T_NATIVE_DOUBLE, &p.roughness.inertia_factor);
@@ -89,7 +89,7 @@ void write_issue15_attributes(hid_t f, const SystemParams& p) {
   if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
 }
 
-void read_issue15_attributes(hid_t f, SystemParams& p) {
+void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
   p.roughness.rough = has_attribute(f, "inertia_factor");
   if (p.roughness.rough) {
     p.roughness.tangential_restitution = read_attribute<double>(f, "tangential_restitution", H5T_NATIVE_DOUBLE);
@@ -134,7 +134,7 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
   m.system.tc_duration = read_attribute<double>(f, "tc_duration", H5T_NATIVE_DOUBLE);
   m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
   m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
-  read_issue15_attributes(f, m.system);
+  read_grains_walls_gravity_attributes(f, m.system);
   return m;
 }
 
@@ -170,7 +170,7 @@ SnapshotWriter::SnapshotWriter(const std::string& path, const SnapshotMetadata& 
     add_frames(f, name, H5Tequal(memory_type, H5T_NATIVE_INT64) > 0 ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
   });
   if (tc_) add_frames(f, "last_collision", H5T_IEEE_F64LE, {n});
-  write_issue15_attributes(f, m.system);
+  write_grains_walls_gravity_attributes(f, m.system);
   if (rough_) add_frames(f, "spins", H5T_IEEE_F64LE, d == 3 ? std::vector<hsize_t>{n, 3} : std::vector<hsize_t>{n});
   file_->flush();
 }

@@ -19,7 +19,7 @@ class PartialFile;
 }
 
 struct SnapshotMetadata {
-  // With its dimension and L_z, and the roughness, walls and gravity of issue 15 (rough runs
+  // With its dimension and L_z, and the roughness, walls and gravity (rough runs
   // write spins with every frame: the frame's ParticleState is then rough).
   SystemParams system;
   double packing_fraction = 0.0;  // area fraction (2D) or volume fraction (3D)

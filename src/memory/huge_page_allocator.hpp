@@ -1,7 +1,7 @@
 // An allocator for the engine's large per-particle arrays that asks the kernel for transparent
 // huge pages (2 MiB).  Prediction reads the records of random neighbourhoods: with 4 KiB pages
-// each of those reads also misses the TLB once the arrays outgrow a few megabytes (issue 18,
-// docs/performance.md), and Debian's kernels grant huge pages only on request (madvise mode).
+// each of those reads also misses the TLB once the arrays outgrow a few megabytes
+// (docs/performance.md, "Cache lines and huge pages"), and Debian's kernels grant huge pages only on request (madvise mode).
 // Arrays under 2 MiB are allocated as usual.
 #pragma once
 

@@ -1,7 +1,8 @@
 // A hint for the cache: start fetching every line an object of at most one line's size spans.
 // A 48-byte disk record straddles two 64-byte lines at every second place of its array, so a
 // prefetch of its first byte alone left the neighbour scan to miss on the line with its velocity
-// and list link (docs/performance.md, seventeenth session).
+// and list link (docs/performance.md, "Both lines of a record; the next bucket's events fetched a
+// bucket ahead").
 #pragma once
 
 #include <cstddef>

@@ -5,8 +5,8 @@
 // (half traces of 1.4 and 1.6), the collision rate, and the scalars that classify the flow states
 // of Chapter 4 (analysis/flow_classification.hpp).  Collisional quantities are accumulated from
 // every collision record over the sampling interval.  Runs with rough grains, gravity or walls
-// (issue 15) add columns: the rotational temperature, the potential and total energy, and what each
-// wall took and gave (observers/wall_stress.hpp); runs without them have exactly the old columns.
+// add columns: the rotational temperature, the potential and total energy, and what each wall took
+// and gave (observers/wall_stress.hpp); runs without them write none of these columns.
 #pragma once
 
 #include <array>

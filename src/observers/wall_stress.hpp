@@ -1,4 +1,4 @@
-// What the flat walls of a run took and gave over a sampling interval (issue 15), per wall face
+// What the flat walls of a run took and gave over a sampling interval, per wall face
 // 2·axis + side (side 0 at coordinate 0, side 1 at L_axis), from the wall collision records:
 //  • pressure: the normal momentum the wall took per unit wall area per unit time (> 0: pushed out);
 //  • shear stress: the tangential momentum it took along the flow axis x per unit area per unit

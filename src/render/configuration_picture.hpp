@@ -3,7 +3,7 @@
 // by its speed, by its spin ω_z (rough grains, thesis Fig C.4) or by a coarse-grained cell field, with the coarse-grained velocity field V(r) of
 // §1.4.3 drawn as arrows from the cell centres.  Disks crossing the box edges are drawn with their
 // periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls
-// (issue 15, Fig C.5) are drawn as lines along the faces they stand on.
+// (Fig C.5) are drawn as lines along the faces they stand on.
 #pragma once
 
 #include <array>

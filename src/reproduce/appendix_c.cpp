@@ -74,7 +74,7 @@ kind = "lees-edwards"
 shear_velocity = 50.0
 shear_ramp_time = 1.0
 )")},
-      // Fig C.5 (examples/issue15/wall_shear_fig_c5.toml): walls at ∓U/2, U = 100 (the caption gives no speed).
+      // Fig C.5 (examples/walls_spin_gravity/wall_shear_fig_c5.toml): walls at ∓U/2, U = 100 (the caption gives no speed).
       {"wall_shear", fmt::format(R"(seed = 2245
 [system]
 particles = {0}
@@ -292,7 +292,7 @@ StudyOutcome evaluate_appendix_c(Scale scale, const StudyOutputs& outputs) {
   spins.location = "Fig C.4 caption (N = 20000, ν = 0.05, ẽ = 0.6, β = −0.8)";
   spins.expected = NAN;
   spins.tolerance_reason = "no number is claimed: the caption describes a picture";
-  spins.checked = "not measured (examples/issue15/rough_shear_fig_c4.toml runs it; docs/walls_gravity_spin.md shows the picture)";
+  spins.checked = "not measured (examples/walls_spin_gravity/rough_shear_fig_c4.toml runs it; docs/walls_gravity_spin.md shows the picture)";
   spins.unresolvable = "needs a spin correlation of neighbouring grains from the snapshots' spins, which granule has no analysis "
                        "for yet";
   out.claims.push_back(spins);
@@ -309,7 +309,7 @@ StudyOutcome evaluate_appendix_c(Scale scale, const StudyOutputs& outputs) {
                         "scale: the structures have less room and appear at other c.");
   }
   out.notes.push_back("The thesis gives neither run lengths nor, for Figs C.3 and C.5, the ramp time or wall speed: τ = 1 and "
-                      "U = 100 are Granule's choices (examples/appendix_c, examples/issue15).  Densities are read from fields.h5, "
+                      "U = 100 are Granule's choices (examples/appendix_c, examples/walls_spin_gravity).  Densities are read from fields.h5, "
                       "first frame (the start) against last.");
   return out;
 }

@@ -1,4 +1,4 @@
-"""Bad input of issue 15's keys through the real `granule run` (walls, gravity, rough grains):
+"""Bad input of the keys of walls, gravity and rough grains through the real `granule run`:
 each must exit 2 with a message that names the key and what is allowed, and write nothing (its
 --out directory is not created)."""
 from harness import GRANULE, WORK, check, finish, granule

@@ -1,4 +1,4 @@
-"""I/O failures of `granule run` (issue 12): the disk fills up at many points of a run (the
+"""I/O failures of `granule run`: the disk fills up at many points of a run (the
 LD_PRELOAD library tests/faults/fail_writes.c makes writes fail with ENOSPC or EIO once a byte
 budget is spent), --out names a regular file or an unwritable directory, an output is /dev/full,
 and stdout is /dev/full.  Each failure must end with exit code 4 (never an abort), one line on

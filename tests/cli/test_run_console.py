@@ -1,6 +1,6 @@
-"""What `granule run` says: the collision model in force (the built-in example silently used the TC
-model), that the built-in example is in use, and as the last line every file the invocation wrote
-(the old line named half of them) — compared with the files actually in the directory."""
+"""What `granule run` says: the collision model in force (including the TC model of the built-in
+example), that the built-in example is in use, and as the last line every file the invocation wrote
+— compared with the files actually in the directory."""
 import time
 
 from harness import WORK, check, finish, granule

@@ -181,7 +181,7 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"lees_edwards_tc", 1500, 0.2, 0.8, 30.0, 1e-6, 40.0, 7, 0xe80eef488a67016cULL},
                       GoldenCase{"dense_elastic", 1200, 0.6, 1.0, 0.0, 0.0, 30.0, 3, 0x2516cc9840f1bf74ULL},
                       GoldenCase{"lees_edwards_protocol", 1500, 0.1, 0.7, 20.0, 1e-6, 40.0, 12, 0x4e880934045bdb47ULL, true},
-                      // The generic core (issue 14) and rough grains (issue 15): spheres, a mixture, spin.
+                      // Spheres, a mixture of sizes, and rough grains with spin.
                       GoldenCase{"spheres_free_cooling_tc", 2000, 0.25, 0.8, 0.0, 1e-7, 30.0, 5, 0x580ce40736128058ULL, false, 3},
                       GoldenCase{"spheres_lees_edwards", 1500, 0.3, 0.9, 10.0, 1e-6, 30.0, 8, 0x0aaef081d0396e11ULL, false, 3},
                       GoldenCase{"spheres_bidisperse", 2000, 0.3, 0.9, 0.0, 1e-7, 30.0, 9, 0xcecba8abc3332889ULL, false, 3, 1.4},

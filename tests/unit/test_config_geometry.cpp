@@ -1,4 +1,4 @@
-// The geometry keys of 3D and polydisperse runs (issue 14): system.dimension, a box of d sides,
+// The geometry keys of 3D and polydisperse runs: system.dimension, a box of d sides,
 // system.packing_fraction (the area fraction's 2D name stays), system.diameters and system.masses.
 // Every refusal names the key, the value and what is allowed; to_toml() repeats the run.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The configuration keys of issue 15 (README "Configuration reference"): walls (boundary.kind =
+// The configuration keys of walls, gravity and rough grains (README "Configuration reference"): walls (boundary.kind =
 // "walls", wall_axes, wall_restitution, wall_tangential_restitution, a wall-driven shear), gravity
 // and rough grains (tangential_restitution, inertia_factor, friction, initial.rotational_temperature).
 // Good values reach SystemParams as documented; each bad one is refused with a message naming the
@@ -175,7 +175,7 @@ TEST(ConfigRoughness, BadValuesAreRefusedByNameAndRange) {
                  {"initial.temperature_over_steady = 2", "smooth disks"});
 }
 
-TEST(ConfigIssue15, ToTomlRepeatsEveryNewKeyExactly) {
+TEST(ConfigWallsGravityRoughness, ToTomlRepeatsEveryNewKeyExactly) {
   const std::vector<std::vector<std::string>> cases = {
       {kWalls, "boundary.shear_velocity=0.3", "boundary.wall_restitution=[0.8, 0.7]", "boundary.wall_tangential_restitution=-0.8",
        "system.tangential_restitution=-0.8", "system.gravity=[0.1, -1]", "initial.rotational_temperature=0.25"},
@@ -219,7 +219,7 @@ TEST(ConfigIssue15, ToTomlRepeatsEveryNewKeyExactly) {
   EXPECT_EQ(walled.find("friction"), std::string::npos) << "no Coulomb limit is written as no key";
 }
 
-TEST(ConfigIssue15, SmoothPeriodicRunsWriteNoNewKey) {
+TEST(ConfigWallsGravityRoughness, SmoothPeriodicRunsWriteNoNewKey) {
   const std::string text = to_toml(accepted({"boundary.kind=\"lees-edwards\"", "boundary.shear_velocity=1"}));
   for (const std::string key : {"wall", "gravity", "tangential_restitution", "inertia_factor", "friction", "rotational"}) {
     EXPECT_EQ(text.find(key), std::string::npos) << key << " in\n" << text;

@@ -1,6 +1,6 @@
 // Unit tier: the counted cumulative function h(v, θ) of thesis (5.11) is a distribution function to
 // the last bit: non-decreasing in v and θ, and h(v_max, 2π) = 1 (5.12) when every sample is binned.
-// (Running sums of the fractions count/total, as before, dipped by ~3·10⁻¹⁷.)
+// (Running sums of the fractions count/total would dip by ~3·10⁻¹⁷.)
 #include <gtest/gtest.h>
 
 #include "distribution/cumulative_function.hpp"

@@ -27,7 +27,7 @@ TEST(HugePageAllocator, SmallArraysKeepTheirTypesAlignment) {
 }
 
 TEST(HugePageAllocator, SphereRecordsAreLineAlignedAtEverySize) {
-  // 64-byte records at an offset of 16 straddled two cache lines each (issue 18).
+  // A 64-byte record at an offset of 16 would straddle two cache lines.
   for (std::size_t n : {100u, 108000u}) {
     HugePageVector<ParticleRecord<3>> records(n);
     for (std::size_t i : {std::size_t{0}, std::size_t{1}, n - 1}) EXPECT_EQ(address(&records[i]) % 64, 0u) << i;

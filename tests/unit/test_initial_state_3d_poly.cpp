@@ -1,4 +1,4 @@
-// Initial states of 3D and polydisperse runs (issue 14), built end to end from configuration keys:
+// Initial states of 3D and polydisperse runs, built end to end from configuration keys:
 // no overlaps (brute force over all pairs, σ_ij = (σ_i + σ_j)/2), the requested packing fraction
 // realised, exact bidisperse counts, the analytic moments of the diameter distributions, masses
 // ∝ σ^d, zero total momentum Σ m_i v_i, the temperature T = Σ m_i |v_i − u|² / (d N) and its

@@ -1,4 +1,4 @@
-// Initial states with walls and rough grains (issue 15), built from configuration keys: every
+// Initial states with walls and rough grains, built from configuration keys: every
 // centre at least its own radius from each wall and no overlap (brute force over all particles and
 // pairs, no periodic image across a wall), the linear profile between moving y walls (least-squares
 // slope against the wall velocities), and Gaussian spins of variance T_rot/I_i, I_i = q m_i σ_i²/4

@@ -1,4 +1,4 @@
-// What shows the spin and the walls of issue 15: the angular velocity column of extended XYZ
+// What shows the spin of rough grains and the walls: the angular velocity column of extended XYZ
 // (`omega`) and the "AngularVelocity" array of .vtp files, pictures coloured by ω_z on a scale
 // centred on 0 (thesis Fig C.4), and walls drawn as lines on their faces (Fig C.5).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Cell fields and collisional transfer of rough grains (issue 15) against hand-computed values:
+// Cell fields and collisional transfer of rough grains against hand-computed values:
 // the mean spin Ω(r) = Σ Iω / Σ I and T_rot(r) = Σ I|ω − Ω|² / (d_rot · count) per cell, and the
 // full collisional stress τ_ab = Σ σ k̂_a P_b / (V t) of collisions with a tangential impulse, with
 // the translational energy they carry; fields.h5 holds the new datasets only for rough runs.

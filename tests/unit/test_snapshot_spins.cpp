@@ -1,6 +1,6 @@
-// Snapshots of issue-15 runs: the spins of rough grains are written with every frame and read
-// back (a restart from a frame gets them), and the roughness, wall and gravity parameters travel
-// as attributes; a smooth run's file has none of them.
+// Snapshots of runs with rough grains, walls or gravity: the spins of rough grains are written
+// with every frame and read back (a restart from a frame gets them), and the roughness, wall and
+// gravity parameters travel as attributes; a smooth run's file has none of them.
 #include <gtest/gtest.h>
 
 #include <hdf5.h>

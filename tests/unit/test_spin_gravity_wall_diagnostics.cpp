@@ -1,4 +1,4 @@
-// The time-series columns of issue 15 (rough grains, gravity, walls) against hand-computed values:
+// The time-series columns of rough grains, gravity and walls against hand-computed values:
 // T_rot = I⟨|ω|²⟩/d_rot with I = q m σ²/4, the potential energy −⟨m g·r⟩, and the wall pressure,
 // shear stress and heat input as sums of known records over wall area × interval.
 #include <gtest/gtest.h>

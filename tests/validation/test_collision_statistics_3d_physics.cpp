@@ -1,4 +1,4 @@
-// Validation of the collision measurements of spheres (issue 14) against independent results: the
+// Validation of the collision measurements of spheres against independent results: the
 // Carnahan–Starling equation of state and the test's own virial sum for the collisional stress
 // (1.6), molecular chaos for the impact parameters ((b/σ)² uniform on [0, 1] in 3D), Enskog theory
 // for the mean free path, isotropy for the free-path directions; and for a binary mixture the same

@@ -1,4 +1,4 @@
-// Validation of the coarse-grained fields and collision statistics (issue 4) against independent
+// Validation of the coarse-grained fields and collision statistics against independent
 // results: the hard-disk equation of state, Enskog kinetic theory of the elastic gas, exact
 // properties of equilibrium (isotropy, uniform impact parameters), and the imposed Lees–Edwards
 // shear.  Each test prints what it measured.

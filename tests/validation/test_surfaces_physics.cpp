@@ -1,4 +1,4 @@
-// Walls, gravity and spin against independent theory (issue 15), with stated tolerances:
+// Walls, gravity and spin against independent theory, with stated tolerances:
 //  • an elastic gas in gravity above a floor: the floor carries the whole weight, P_floor = m g N_A
 //    (momentum balance, exact on average), and the column's profile is the hydrostatic one of
 //    the local-density theory (theory/hydrostatics.hpp: barometric in the dilute limit, Henderson

@@ -1,4 +1,4 @@
-// Exact laws of walls, gravity and spin, to round-off (issue 15):
+// Exact laws of walls, gravity and spin, to round-off:
 //  • a free grain under gravity follows its parabola through any number of cell crossings;
 //  • a grain dropped on a floor of restitution e_w bounces at the times and speeds of the
 //    geometric series (t₁ = √(2h/g), then flights 2 e_wᵏ g t₁ / g), and a moving rough floor
