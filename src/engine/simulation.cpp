@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "boundary/periodic_wrap.hpp"
 #include "memory/prefetch_lines.hpp"
 #include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
@@ -26,13 +25,7 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 template <int D>
 Vec<D> Simulation<D>::position_at(std::int32_t i, double time) const {
   const ParticleRecord<D>& p = particles_[at(i)];
-  Vector r;
-  if (has_gravity_) {
-    for (int a = 0; a < D; ++a) r[a] = p.r[a] + (p.v[a] + 0.5 * gravity_[a] * time) * time;
-  } else {
-    for (int a = 0; a < D; ++a) r[a] = p.r[a] + p.v[a] * time;
-  }
-  return r;
+  return motion_.position_at(p.r, p.v, time);
 }
 
 template <int D>
@@ -42,23 +35,14 @@ Vec<D> Simulation<D>::position_now(std::int32_t i) const {
 
 template <int D>
 Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
-  const ParticleRecord<D>& p = particles_[at(i)];
-  Vector v = p.v;
-  if (has_gravity_) v = v + t_now_ * gravity_;
-  return v;
+  return motion_.velocity_at(particles_[at(i)].v, t_now_);
 }
 
 template <int D>
 void Simulation<D>::set_velocity_now(std::int32_t i, const Vector& v) {
-  // A new flight through the position now: its false position moves by the change of velocity
-  // times t_now (particle_record.hpp).  Without gravity the velocity is stored as given, so that
-  // energy and momentum budgets are those of the collision rule alone.
+  // A new flight through the position now (particle_record.hpp).
   ParticleRecord<D>& p = particles_[at(i)];
-  for (int a = 0; a < D; ++a) {
-    const double v_base = has_gravity_ ? v[a] - gravity_[a] * t_now_ : v[a];
-    p.r[a] += (p.v[a] - v_base) * t_now_;
-    p.v[a] = v_base;
-  }
+  motion_.start_flight(p.r, p.v, v, t_now_);
 }
 
 template <int D>
@@ -68,10 +52,9 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
-      frame_{params.length_x, params.length_y, 0.0},
+      boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
+      motion_(params.gravity),
       protocol_(params.shear_velocity, params.shear_history) {
-  for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];
-  has_gravity_ = params.has_gravity();
   load(state);
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
@@ -86,13 +69,13 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   if (protocol_running_) {
     // The segment a run that got here would be in: the chain of segments is fixed by the protocol.
     const ShearSegment segment = protocol_.segment_containing(clock.time);
-    frame_.shear_velocity = segment.velocity;
+    boundaries_.set_image_velocity(segment.velocity);
     segment_end_ = segment.end;
     actions_.schedule(TimedAction::kShearSegment, segment.end - clock_base_);
   } else {
-    frame_.shear_velocity = clock.held_shear_velocity.value_or(protocol_.velocity(0.0));
+    boundaries_.set_image_velocity(clock.held_shear_velocity.value_or(protocol_.velocity(0.0)));
   }
-  shear_rate_ = frame_.shear_velocity / params.length_y;
+  shear_rate_ = image_velocity() / params.length_y;
   rebuild();
   collapse_detector_.reset(collapse_window(), t_now_);
   renumber_interval_ = std::llround(params.renumber_every * static_cast<double>(params.particles));
@@ -114,7 +97,7 @@ double Simulation<D>::bytes_per_particle() const {
 
 template <int D>
 std::int32_t Simulation<D>::cell_of(const Vector& r) const {
-  const double xi = frame_.sheared_x(r[0], r[1], strain());
+  const double xi = boundaries_.frame().sheared_x(r[0], r[1], strain());
   const int column = std::clamp(static_cast<int>(std::floor(xi / grid_.width)), 0, grid_.nx - 1);
   const int row = std::clamp(static_cast<int>(std::floor(r[1] / grid_.height)), 0, grid_.ny - 1);
   int layer = 0;
@@ -126,13 +109,11 @@ template <int D>
 void Simulation<D>::rebase() {
   const double delta = t_now_;
   // Every false position moves to the new base (particle_record.hpp).
-  for (std::size_t k = 0; k < particles_.size(); ++k) {
-    ParticleRecord<D>& p = particles_[k];
-    for (int a = 0; a < D; ++a) {
-      p.r[a] += has_gravity_ ? (p.v[a] + 0.5 * gravity_[a] * delta) * delta : p.v[a] * delta;
-      if (has_gravity_) p.v[a] += gravity_[a] * delta;
+  motion_.visit([&](const auto& flight) {
+    for (ParticleRecord<D>& p : particles_) {
+      for (int a = 0; a < D; ++a) flight.advance_base(a, p.r[a], p.v[a], delta);
     }
-  }
+  });
   for (auto& t : last_collision_) t -= delta;
   queue_.shift_times(delta);
   collapse_detector_.shift_times(delta);
@@ -148,21 +129,8 @@ template <int D>
 void Simulation<D>::rebuild() {
   const auto n = static_cast<std::int32_t>(params_.particles);
   rebase();  // the records now hold the states now, which are wrapped into the box
-  const double lx = params_.length_x;
   const double s = strain();
-  // Wall axes are never wrapped: a grain's centre stays a radius inside them (check_invariants).
-  for (auto& p : particles_) {
-    if (params_.walls[1]) {
-      if (!params_.walls[0]) wrap_periodic(p.r[0], lx);
-    } else {
-      frame_.wrap_into_box(p.r[0], p.r[1], p.v[0], s);
-      // Then into [0, L_x) in the sheared abscissa, where the cell grid lives.
-      p.r[0] -= lx * std::floor(frame_.sheared_x(p.r[0], p.r[1], s) / lx);
-    }
-    if constexpr (D == 3) {
-      if (!params_.walls[2]) wrap_periodic(p.r[2], params_.length_z);
-    }
-  }
+  for (auto& p : particles_) boundaries_.wrap_into_grid(p.r, p.v[0], s);
   lists_.reset(grid_.cell_count());
   queue_.reset(n);
   // Filled in the order of user ids: the order within a list decides ties between candidates, and
@@ -180,7 +148,7 @@ template <int D>
 void Simulation<D>::start_production(const SystemParams& production) {
   params_.restitution = production.restitution;
   params_.roughness.tangential_restitution = production.roughness.tangential_restitution;
-  params_.wall = production.wall;
+  set_walls(production.wall);
   clock_base_ = -t_now_;
   collisions_ = 0;
   events_ = 0;
@@ -200,11 +168,7 @@ void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
   if (c < 0 || c >= grid_.count(axis)) {
     // Out through a face of the box: in from the image on the other side.
     c -= direction * grid_.count(axis);
-    if (axis == 1) {
-      enter_from_image(i, -direction);  // the Lees–Edwards rule (thesis §1.4.2)
-    } else {
-      particles_[at(i)].r[axis] -= image_across(axis, direction, strain()).position[axis];
-    }
+    enter_from_image(i, axis, direction);
   }
   std::int32_t new_cell = 0;
   if constexpr (D == 2) {
@@ -274,8 +238,7 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     const double radius = 0.5 * (diameter_.empty() ? params_.diameter : diameter_[at(i)]);
     record.contact_point = record.first_position + radius * k_hat;
     double unused_vx = 0.0;
-    frame_.wrap_into_box(record.contact_point[0], record.contact_point[1], unused_vx, s);
-    if constexpr (D == 3) wrap_periodic(record.contact_point[2], params_.length_z);
+    boundaries_.wrap_into_box(record.contact_point, unused_vx, s);
     record.first_velocity_before = v1;
     record.second_velocity_before = v2;
     record.second_velocity_before[0] = v2[0] - shift.velocity_x;

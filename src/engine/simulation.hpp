@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "boundary/shear_frame.hpp"
+#include "boundary/box_boundaries.hpp"
 #include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
 #include "cells/exact_divisor.hpp"
@@ -35,6 +35,7 @@
 #include "events/event.hpp"
 #include "events/event_queue.hpp"
 #include "events/timed_actions.hpp"
+#include "motion/motion.hpp"
 #include "physics/collision_law.hpp"
 #include "physics/rough_collision_rule.hpp"
 
@@ -119,7 +120,7 @@ class Simulation {
   // Strain of the sheared cell grid, |s| ≤ strain_period/2; Δ ≡ s L_y (mod L_x).
   double strain() const { return strain_ref_ + shear_rate_ * (t_now_ - t_ref_); }
   // The velocity U of the upper images now (the current segment's Ū of the protocol).
-  double image_velocity() const { return frame_.shear_velocity; }
+  double image_velocity() const { return boundaries_.frame().shear_velocity; }
   // Current Lees–Edwards image offset Δ ∈ [0, L_x) (thesis §1.4.2).
   double shear_offset() const;
   const SystemParams& params() const { return params_; }
@@ -185,9 +186,9 @@ class Simulation {
   }
   void predict(std::int32_t i);
   void execute_crossing(std::int32_t i, EventKind kind);
-  // Particle i leaves the box through the top (image_y = −1: it comes in from the image below) or
-  // the bottom (+1), by the Lees–Edwards rule.
-  void enter_from_image(std::int32_t i, int image_y);
+  // Particle i leaves the box through the face of `axis` in `direction` and comes in from the image
+  // on the other side (thesis §1.4.2 across a Lees–Edwards face: with its velocity shifted by ∓U).
+  void enter_from_image(std::int32_t i, int axis, int direction);
   // Returns true if a physical collision was executed.
   bool execute_collision(std::int32_t i, std::int32_t j);
   void realign_sheared_grid();
@@ -220,9 +221,6 @@ class Simulation {
   void set_velocity_now(std::int32_t i, const Vector& v);
   Spin<D> spin(std::int32_t i) const;
   void set_spin(std::int32_t i, const Spin<D>& w);
-  double box_length(int axis) const {
-    return axis == 0 ? params_.length_x : (axis == 1 ? params_.length_y : params_.length_z);
-  }
   double mass_of(std::int32_t i) const { return mass_.empty() ? 1.0 : mass_[static_cast<std::size_t>(i)]; }
   double radius_of(std::int32_t i) const {
     return 0.5 * (diameter_.empty() ? params_.diameter : diameter_[static_cast<std::size_t>(i)]);
@@ -254,8 +252,8 @@ class Simulation {
   // compiled without and with gravity (the plain case pays nothing).  Flattened: the neighbour
   // loop, its visitor and the pair test inline into one loop (the hot path).
   Prediction next_event(std::int32_t i, const Reach& reach, Candidate known) const;
-  template <bool kGravity>
-  [[gnu::flatten]] Prediction next_event_in(std::int32_t i, const Reach& reach, Candidate known) const;
+  template <typename Flight>
+  [[gnu::flatten]] Prediction next_event_in(const Flight& flight, std::int32_t i, const Reach& reach, Candidate known) const;
   void store(std::int32_t i, const Prediction& next);
   // After a crossing (Isobe 1999): the collision candidate found before stays the best among the
   // cells that stay adjacent (ARCHITECTURE.md, "One event per particle"), so only the layer of
@@ -278,23 +276,18 @@ class Simulation {
   Candidate candidate(std::int32_t i) const;
   bool recomputes_candidates() const {
     for (int a = 0; a < D; ++a) {
-      if (!params_.walls[static_cast<std::size_t>(a)] && grid_.count(a) < kCandidateCells) return false;
+      if (boundaries_.has_images(a) && grid_.count(a) < kCandidateCells) return false;
     }
-    const bool sheared = grid_.strain_period > 0.0 && !params_.walls[0] && !params_.walls[1];
+    const bool sheared = grid_.strain_period > 0.0 && boundaries_.sheared();
     return !sheared || params_.length_x > 4.0 * grid_.width + 4.0 * grid_.strain_period * grid_.height;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
   // first wall it hits (the wall faces of boundary cells are never crossed).
   Crossing next_crossing(std::int32_t i, const std::array<int, D>& cell, const Vector& position,
                          const Vector& velocity) const;
-  // Where the box's image one period away across a face sits relative to the box, and how fast
-  // its particles move relative to their originals (the per-axis boundary rule): ±L_x along x,
-  // ±L_z along z, and along y the Lees–Edwards image, offset by ±Δ along x and moving at ±U.
-  struct FaceImage {
-    Vector position;
-    double velocity_x;
-  };
-  FaceImage image_across(int axis, int direction, double strain) const;
+  template <typename Flight>
+  Crossing next_crossing(const Flight& flight, std::int32_t i, const std::array<int, D>& cell, const Vector& position,
+                         const Vector& velocity) const;
   // Calls visit(j, shift, shift_vx) for every particle j ≠ i of the 3^D block of cells around
   // i's cell, with the image shift (position, and velocity along x) that brings j next to i.
   // The sheared frame is plainly periodic, so images follow from the cell offsets alone; a wall
@@ -314,19 +307,25 @@ class Simulation {
   void block_cells(const std::array<int, D>& cell, const Reach& reach, BlockCells& block) const;
   // Whether a cell is away from every face of the grid: its block then sees no image.
   bool is_interior(const std::array<int, D>& cell) const;
-  // The image of a partner at lab offset `offset` from a particle in contact with it.
-  struct PartnerImage {
-    int image_y;  // −1, 0, +1: which vertical image
-    FaceImage shift;
-  };
-  PartnerImage nearest_image(const Vector& offset) const;
+  // The image of a partner at lab offset `offset` from a particle in contact with it, now.
+  using PartnerImage = typename BoxBoundaries<D>::PartnerImage;
+  PartnerImage nearest_image(const Vector& offset) const { return boundaries_.nearest_image(offset, strain()); }
+  // The walls' parameters, in params_ (what params() reports and checkpoints hold) and in the
+  // boundaries (what the engine applies).
+  void set_walls(const std::array<WallParams, 6>& wall) {
+    params_.wall = wall;
+    boundaries_.walls() = wall;
+  }
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
 
   SystemParams params_;
   CellGrid grid_;
   ExactDivisor by_columns_, by_rows_;  // by grid_.nx and grid_.ny (cell_coordinates)
-  ShearFrame frame_;  // its shear_velocity is the current U
+  // What lies beyond each face of the box (its frame's shear_velocity is the current U) and how
+  // particles fly: the boundary and motion policies (ARCHITECTURE.md, "Physics as policies").
+  BoxBoundaries<D> boundaries_;
+  Motion<D> motion_;
   double shear_rate_ = 0.0;
   ShearProtocol protocol_;
   bool protocol_running_ = false;
@@ -340,8 +339,6 @@ class Simulation {
   // Angular velocities (ω_z; ω_x, ω_y, ω_z for spheres), valid at all times (no torque between
   // events); rough grains only.
   std::array<std::vector<double>, kSpinComponents> spin_;
-  Vector gravity_;
-  bool has_gravity_ = false;
   std::vector<double> last_collision_;  // TC model only
   // The user's id of each engine particle (empty: the same), and the renumbering's cadence.  The
   // queue reads it in place (set_tie_order): it is sized once, at construction or restore.

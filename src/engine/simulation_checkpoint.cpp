@@ -149,7 +149,7 @@ void Simulation<D>::visit_saved_state(Self& self, Visit&& visit) {
   visit("clock_base", self.clock_base_);
   visit("t_ref", self.t_ref_);
   visit("strain_at_reference", self.strain_ref_);
-  visit("image_velocity", self.frame_.shear_velocity);
+  visit("image_velocity", self.boundaries_.image_velocity());
   visit("shear_segment_end", self.segment_end_);
   visit("collisions", self.collisions_);
   visit("events", self.events_);
@@ -220,14 +220,14 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
-      frame_{params.length_x, params.length_y, 0.0},
+      boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
+      motion_(params.gravity),
       protocol_(params.shear_velocity, params.shear_history) {
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);
-  for (int a = 0; a < D; ++a) gravity_[a] = params.gravity[static_cast<std::size_t>(a)];
-  has_gravity_ = params.has_gravity();
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
   visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
+  set_walls(params_.wall);
   const auto n = static_cast<std::size_t>(params.particles);
   particles_.assign(n, ParticleRecord<D>{});
   queue_.reset(static_cast<std::int32_t>(n));
@@ -257,7 +257,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       value.assign(loaded.begin(), loaded.end());
     }
   });
-  shear_rate_ = frame_.shear_velocity / params.length_y;
+  shear_rate_ = image_velocity() / params.length_y;
   protocol_running_ = archive.integer(prefix + "protocol_running") != 0;
   actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
   schedule_realignment();

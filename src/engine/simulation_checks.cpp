@@ -54,14 +54,14 @@ void Simulation<D>::check_invariants() const {
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", user_id(i), " has a non-finite state");
     for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
-      if (!params_.walls[static_cast<std::size_t>(a)]) continue;
-      const double inside = radius_of(i) - kDistanceTolerance * box_length(a);
-      if (r[a] < inside || r[a] > box_length(a) - inside) fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
+      if (boundaries_.wall_penetration(a, r[a], radius_of(i), kDistanceTolerance * boundaries_.length(a)) > 0.0) {
+        fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
+      }
     }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(slot(i).cell());
     for (int a = 0; a < D; ++a) {
-      const double coordinate = a == 0 ? frame_.sheared_x(r[0], r[1], s) : r[a];
+      const double coordinate = a == 0 ? boundaries_.frame().sheared_x(r[0], r[1], s) : r[a];
       if (coordinate < cell[a] * grid_.size(a) - cell_tolerance || coordinate > (cell[a] + 1) * grid_.size(a) + cell_tolerance) {
         fail("particle ", user_id(i), " is outside its cell along axis ", a, " (coordinate ", coordinate, ", cell ", cell[a], ")");
       }
@@ -121,15 +121,15 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
   if (is_wall_hit(kind)) {  // the grain must touch the wall
     const int face = wall_face(kind);
     const int axis = face / 2;
-    const double wall = face % 2 == 0 ? 0.0 : box_length(axis);
-    if (std::abs(std::abs(r[axis] - wall) - radius_of(i)) > kDistanceTolerance * box_length(axis)) {
+    const double wall = face % 2 == 0 ? 0.0 : boundaries_.length(axis);
+    if (std::abs(std::abs(r[axis] - wall) - radius_of(i)) > kDistanceTolerance * boundaries_.length(axis)) {
       fail("wall hit of particle ", user_id(i), " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
     }
     return;
   }
   // A crossing: the particle must be on the face it is about to cross.
   const int axis = crossing_axis(kind);
-  const double coordinate = axis == 0 ? frame_.sheared_x(r[0], r[1], strain()) : r[axis];
+  const double coordinate = axis == 0 ? boundaries_.frame().sheared_x(r[0], r[1], strain()) : r[axis];
   const int cell = cell_coordinates(slot(i).cell())[static_cast<std::size_t>(axis)];
   const double face = (cell + (crossing_direction(kind) > 0 ? 1 : 0)) * grid_.size(axis);
   if (std::abs(face - coordinate) > kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth})) {

@@ -1,6 +1,6 @@
-// Inline members of Simulation<D> on the hot path of prediction: the image of the box across a
-// face (ARCHITECTURE.md, "Boundaries per axis") and the scan of the cells within reach of a
-// particle.  Included by engine/simulation.hpp only.
+// Inline members of Simulation<D> on the hot path of prediction: the prefetches one event ahead and
+// the scan of the cells within reach of a particle, with the images the boundaries put beyond the
+// faces of the grid (boundary/box_boundaries.hpp).  Included by engine/simulation.hpp only.
 #pragma once
 
 #include <algorithm>
@@ -11,20 +11,6 @@
 #include "memory/prefetch_lines.hpp"
 
 namespace granule {
-
-template <int D>
-inline typename Simulation<D>::FaceImage Simulation<D>::image_across(int axis, int direction, double strain) const {
-  FaceImage image{};
-  if (axis == 1) {
-    const ImageShift shift = frame_.image_shift(0, direction, strain);
-    image.position[0] = shift.position.x;
-    image.position[1] = shift.position.y;
-    image.velocity_x = shift.velocity_x;
-  } else {
-    image.position[axis] = direction * (axis == 0 ? params_.length_x : params_.length_z);
-  }
-  return image;
-}
 
 // Forced inline: GCC 12 finds a function that only prefetches pure, and drops its call.
 template <int D>
@@ -119,16 +105,16 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
     if constexpr (D == 3) {
       layer = cell[2] + dl;
       if (layer < 0 || layer >= grid_.nz) {
-        if (params_.walls[2]) continue;
+        if (!boundaries_.has_images(2)) continue;
         const int direction = layer < 0 ? -1 : 1;
         layer -= direction * grid_.nz;
-        shift_z = image_across(2, direction, s).position[2];
+        shift_z = boundaries_.image_across(2, direction, s).position[2];
       }
     }
     for (int dr = reach.lowest[1]; dr <= reach.highest[1]; ++dr) {
       int r = cell[1] + dr;
       int iy = 0;
-      if ((r < 0 || r >= grid_.ny) && params_.walls[1]) continue;
+      if ((r < 0 || r >= grid_.ny) && !boundaries_.has_images(1)) continue;
       if (r < 0) {
         r += grid_.ny;
         iy = -1;
@@ -136,18 +122,18 @@ inline void Simulation<D>::block_cells(const std::array<int, D>& cell, const Rea
         r -= grid_.ny;
         iy = 1;
       }
-      const ImageShift row_shift = frame_.image_shift(0, iy, s);
+      const auto row_shift = boundaries_.image_across(1, iy, s);
       for (int dc = reach.lowest[0]; dc <= reach.highest[0]; ++dc) {
         int c = cell[0] + dc;
         Vector shift;
-        shift[0] = row_shift.position.x;
-        shift[1] = row_shift.position.y;
+        shift[0] = row_shift.position[0];
+        shift[1] = row_shift.position[1];
         if constexpr (D == 3) shift[2] = shift_z;
         if (c < 0 || c >= grid_.nx) {
-          if (params_.walls[0]) continue;
+          if (!boundaries_.has_images(0)) continue;
           const int direction = c < 0 ? -1 : 1;
           c -= direction * grid_.nx;
-          shift[0] += image_across(0, direction, s).position[0];
+          shift[0] += boundaries_.image_across(0, direction, s).position[0];
         }
         CellImage& image = block.image[static_cast<std::size_t>(visited)];
         for (int a = 0; a < D; ++a) image.position[static_cast<std::size_t>(a)] = shift[a];

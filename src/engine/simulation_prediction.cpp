@@ -1,6 +1,6 @@
 // Prediction: the next event of a particle — the first cell face or wall it reaches and the
 // earliest collision in the cells it scans — and storing it as the particle's one pending event
-// (ARCHITECTURE.md, "Speed": the layer scan after a crossing).
+// (ARCHITECTURE.md, "One event per particle": the layer scan after a crossing).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,99 +20,81 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 template <int D>
 typename Simulation<D>::Crossing Simulation<D>::next_crossing(std::int32_t i, const std::array<int, D>& cell,
                                                               const Vector& r, const Vector& v) const {
+  return motion_.visit([&](const auto& flight) { return next_crossing(flight, i, cell, r, v); });
+}
+
+template <int D>
+template <typename Flight>
+typename Simulation<D>::Crossing Simulation<D>::next_crossing(const Flight& flight, std::int32_t i,
+                                                              const std::array<int, D>& cell, const Vector& r,
+                                                              const Vector& v) const {
   const double vyi = v[1];
 
   // In the sheared frame ξ(τ) = ξ0 + bτ + aτ² (shear_frame.hpp); periodic boxes have a = 0 and
-  // b = v_x (plus ½g_x under gravity, which Lees–Edwards allows only with g_y = 0).
+  // b = v_x (plus ½g_x in a field, which Lees–Edwards allows only with g_y = 0).
   const double s = strain();
   const double y_rel = r[1] - 0.5 * params_.length_y;
   const double xi0 = r[0] - s * y_rel;
-  double a = -shear_rate_ * vyi;
-  if (has_gravity_) a += 0.5 * gravity_[0];
+  const double a = -shear_rate_ * vyi + flight.half_acceleration(0);
   const double b = v[0] - shear_rate_ * y_rel - s * vyi;
   const double left = cell[0] * grid_.width;
   const double right = left + grid_.width;
-  // A wall face of a boundary cell is never crossed: the wall is hit first (below).
-  const bool wall_x = params_.walls[0];
-  double best = wall_x && cell[0] == grid_.nx - 1 ? kInf : first_exit_time(a, b, xi0 - right);
+  // The outer face of a cell at the edge of the grid is crossed only into an image; at a wall the
+  // wall is hit first (below).
+  const bool images_x = boundaries_.has_images(0);
+  double best = !images_x && cell[0] == grid_.nx - 1 ? kInf : first_exit_time(a, b, xi0 - right);
   EventKind kind = crossing_through(0, 1);
-  if (const double t = wall_x && cell[0] == 0 ? kInf : first_exit_time(-a, -b, left - xi0); t < best) {
+  if (const double t = !images_x && cell[0] == 0 ? kInf : first_exit_time(-a, -b, left - xi0); t < best) {
     best = t;
     kind = crossing_through(0, 0);
   }
-  // The other axes are not sheared: straight (or parabolic) flight between planes.
+  // The other axes are not sheared: flights between planes.
   for (int axis = 1; axis < D; ++axis) {
-    const double va = v[axis];
     const double size = grid_.size(axis);
-    const bool wall = params_.walls[static_cast<std::size_t>(axis)];
-    if (has_gravity_) {
-      const double half_g = 0.5 * gravity_[axis];
-      const double upper = (cell[axis] + 1) * size;
-      const double lower = cell[axis] * size;
-      if (!(wall && cell[axis] == grid_.count(axis) - 1)) {
-        if (const double t = first_exit_time(half_g, va, r[axis] - upper); t < best) {
-          best = t;
-          kind = crossing_through(axis, 1);
-        }
-      }
-      if (!(wall && cell[axis] == 0)) {
-        if (const double t = first_exit_time(-half_g, -va, lower - r[axis]); t < best) {
-          best = t;
-          kind = crossing_through(axis, 0);
-        }
-      }
-    } else if (va > 0.0) {
-      if (wall && cell[axis] == grid_.count(axis) - 1) continue;
-      if (const double t = std::max(0.0, ((cell[axis] + 1) * size - r[axis]) / va); t < best) {
+    const bool images = boundaries_.has_images(axis);
+    if (images || cell[axis] < grid_.count(axis) - 1) {
+      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], (cell[axis] + 1) * size, 1); t < best) {
         best = t;
         kind = crossing_through(axis, 1);
       }
-    } else if (va < 0.0) {
-      if (wall && cell[axis] == 0) continue;
-      if (const double t = std::max(0.0, (cell[axis] * size - r[axis]) / va); t < best) {
+    }
+    if (images || cell[axis] > 0) {
+      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], cell[axis] * size, -1); t < best) {
         best = t;
         kind = crossing_through(axis, 0);
       }
     }
   }
-  // Walls: contact when the centre is one radius from the wall, g(τ) = ±(contact − r_a(τ)) ≥ 0.
-  if (params_.has_walls()) {
-    const double radius = radius_of(i);
-    for (int axis = 0; axis < D; ++axis) {
-      if (!params_.walls[static_cast<std::size_t>(axis)]) continue;
-      const double half_g = has_gravity_ ? 0.5 * gravity_[axis] : 0.0;
-      const double length = box_length(axis);
-      if (const double t = first_exit_time(-half_g, -v[axis], radius - r[axis]); t < best) {
-        best = t;
-        kind = wall_hit(2 * axis);
-      }
-      if (const double t = first_exit_time(half_g, v[axis], r[axis] - (length - radius)); t < best) {
-        best = t;
-        kind = wall_hit(2 * axis + 1);
-      }
-    }
-  }
+  int face = -1;
+  boundaries_.earliest_wall_hit(flight, r, v, radius_of(i), best, face);
+  if (face >= 0) kind = wall_hit(face);
   if (best == kInf) kind = EventKind::kNone;
   return {kind, best};
 }
 
 template <int D>
 typename Simulation<D>::Prediction Simulation<D>::next_event(std::int32_t i, const Reach& reach, Candidate known) const {
-  return has_gravity_ ? next_event_in<true>(i, reach, known) : next_event_in<false>(i, reach, known);
+  return motion_.visit([&](const auto& flight) { return next_event_in(flight, i, reach, known); });
 }
 
 template <int D>
-template <bool kGravity>
-typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, const Reach& reach,
-                                                                Candidate known) const {
-  const Vector ri = position_now(i);
-  const Vector vi = velocity_now(i);
+template <typename Flight>
+typename Simulation<D>::Prediction Simulation<D>::next_event_in(const Flight& flight, std::int32_t i,
+                                                                const Reach& reach, Candidate known) const {
+  const double now = t_now_;  // every position is its false position moved to now
+  const ParticleRecord<D>& pi = particles_[at(i)];
+  Vector ri;
+  Vector vi;
+  for (int a = 0; a < D; ++a) {
+    ri[a] = flight.coordinate_at(a, pi.r[a], pi.v[a], now);
+    vi[a] = flight.velocity_at(a, pi.v[a], now);
+  }
   const std::array<int, D> cell = cell_coordinates(slot(i).cell());
-  const Crossing crossing = next_crossing(i, cell, ri, vi);
+  const Crossing crossing = next_crossing(flight, i, cell, ri, vi);
 
   // Collisions with the particles of the cells within reach, tested in batches (CollisionBatch).
-  // Under a uniform gravity the relative motion of two grains is still a straight line: only
-  // their present states need it.
+  // In a uniform field the relative motion of two grains is still a straight line: only their
+  // present states need it.
   std::int32_t partner = known.partner;
   double best = known.delay;
   const bool polydisperse = !diameter_.empty();
@@ -121,7 +103,6 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
   block_cells(cell, reach, block);
   CollisionBatch<D> batch;
   const CellImage itself{};
-  const double now = t_now_;  // every neighbour's position is its false position moved to now
   for (int list = 0; list < block.count; ++list) {
     const CellImage& image = block.imaged ? block.image[block.place[static_cast<std::size_t>(list)]] : itself;
     const auto& shift = image.position;
@@ -131,13 +112,8 @@ typename Simulation<D>::Prediction Simulation<D>::next_event_in(std::int32_t i, 
       const ParticleRecord<D>& pj = particles_[at(j)];
       const auto slot = static_cast<std::size_t>(batch.size);
       for (int a = 0; a < D; ++a) {
-        double vj = pj.v[a];
-        if constexpr (kGravity) {
-          batch.r[a][slot] = pj.r[a] + (vj + 0.5 * gravity_[a] * now) * now + shift[static_cast<std::size_t>(a)] - ri[a];
-          vj += gravity_[a] * now;
-        } else {
-          batch.r[a][slot] = pj.r[a] + vj * now + shift[static_cast<std::size_t>(a)] - ri[a];
-        }
+        batch.r[a][slot] = flight.coordinate_at(a, pj.r[a], pj.v[a], now) + shift[static_cast<std::size_t>(a)] - ri[a];
+        const double vj = flight.velocity_at(a, pj.v[a], now);
         batch.v[a][slot] = a == 0 ? vj + shift_vx - vi[a] : vj - vi[a];
       }
       batch.contact[slot] = polydisperse ? contact_distance(i, j) : sigma;

@@ -34,14 +34,14 @@ template <int D>
 void Simulation<D>::enter_shear_segment(const ShearSegment& segment) {
   segment_end_ = segment.end;
   actions_.schedule(TimedAction::kShearSegment, segment.end - clock_base_);
-  if (segment.velocity != frame_.shear_velocity) change_image_velocity(segment.velocity);
+  if (segment.velocity != image_velocity()) change_image_velocity(segment.velocity);
 }
 
 template <int D>
 void Simulation<D>::change_image_velocity(double velocity) {
   strain_ref_ = strain();
   t_ref_ = t_now_;
-  frame_.shear_velocity = velocity;
+  boundaries_.set_image_velocity(velocity);
   shear_rate_ = velocity / params_.length_y;
   schedule_realignment();
   repredict_after_shear_change();
@@ -77,40 +77,17 @@ void Simulation<D>::realign_sheared_grid() {
 }
 
 template <int D>
-typename Simulation<D>::PartnerImage Simulation<D>::nearest_image(const Vector& offset) const {
-  // The nearest image in the sheared frame, unambiguous because cells are at least as large as
-  // a contact pair (cell_grid.hpp); none across a wall axis.
-  const double lx = params_.length_x;
-  const double ly = params_.length_y;
-  const double s = strain();
-  const double dx = offset[0];
-  const double dy = offset[1];
-  const int iy = params_.walls[1] ? 0 : (dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0));
-  const ImageShift row = frame_.image_shift(0, iy, s);
-  FaceImage shift{};
-  shift.position[0] = row.position.x;
-  shift.position[1] = row.position.y;
-  shift.velocity_x = row.velocity_x;
-  const double dxi = (dx + shift.position[0]) - s * (dy + shift.position[1]);
-  if (!params_.walls[0]) shift.position[0] -= lx * std::round(dxi / lx);
-  if constexpr (D == 3) {
-    if (!params_.walls[2]) shift.position[2] = -params_.length_z * std::round(offset[2] / params_.length_z);
-  }
-  return {iy, shift};
-}
-
-template <int D>
-void Simulation<D>::enter_from_image(std::int32_t i, int image_y) {
-  const ImageShift shift = frame_.image_shift(0, image_y, strain());
+void Simulation<D>::enter_from_image(std::int32_t i, int axis, int direction) {
+  const auto image = boundaries_.image_across(axis, direction, strain());
   ParticleRecord<D>& p = particles_[at(i)];
-  p.r[0] += shift.position.x;
-  p.r[1] += shift.position.y;
+  for (int a = 0; a < D; ++a) p.r[a] -= image.position[a];
+  if (!boundaries_.moving_images(axis)) return;
   Vector v = velocity_now(i);
   const double vx_before = v[0];
-  v[0] += shift.velocity_x;
+  v[0] -= image.velocity_x;
   set_velocity_now(i, v);
   if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), user_id(i), -image_y, vx_before, v[0]};
+  const BoundaryCrossingRecord record{time(), user_id(i), direction, vx_before, v[0]};
   for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
 }
 
@@ -122,15 +99,13 @@ template void Simulation<2>::enter_shear_segment(const ShearSegment&);
 template void Simulation<2>::change_image_velocity(double);
 template void Simulation<2>::repredict_after_shear_change();
 template void Simulation<2>::realign_sheared_grid();
-template Simulation<2>::PartnerImage Simulation<2>::nearest_image(const Vec<2>&) const;
-template void Simulation<2>::enter_from_image(std::int32_t, int);
+template void Simulation<2>::enter_from_image(std::int32_t, int, int);
 template double Simulation<3>::shear_offset() const;
 template void Simulation<3>::schedule_realignment();
 template void Simulation<3>::enter_shear_segment(const ShearSegment&);
 template void Simulation<3>::change_image_velocity(double);
 template void Simulation<3>::repredict_after_shear_change();
 template void Simulation<3>::realign_sheared_grid();
-template Simulation<3>::PartnerImage Simulation<3>::nearest_image(const Vec<3>&) const;
-template void Simulation<3>::enter_from_image(std::int32_t, int);
+template void Simulation<3>::enter_from_image(std::int32_t, int, int);
 
 }  // namespace granule

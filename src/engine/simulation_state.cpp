@@ -4,7 +4,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "boundary/periodic_wrap.hpp"
 #include "engine/simulation.hpp"
 
 namespace granule {
@@ -64,20 +63,12 @@ ParticleState Simulation<D>::state(std::size_t first, std::size_t count, const s
   const double s = strain();
   for (std::size_t i = 0; i < count; ++i) {
     const std::int32_t id = id_of(first + i);
-    const Vector r = position_now(id);
-    const Vector v = velocity_now(id);
+    Vector r = position_now(id);
+    Vector v = velocity_now(id);
+    boundaries_.wrap_into_box(r, v[0], s);
     for (int a = 0; a < D; ++a) {
       out.position(a)[i] = r[a];
       out.velocity(a)[i] = v[a];
-    }
-    // (x walls leave x inside the box: the frame's wrap does not move it.)
-    if (!params_.walls[1]) {
-      frame_.wrap_into_box(out.x[i], out.y[i], out.vx[i], s);
-    } else if (!params_.walls[0]) {
-      wrap_periodic(out.x[i], params_.length_x);
-    }
-    if constexpr (D == 3) {
-      if (!params_.walls[2]) wrap_periodic(out.z[i], params_.length_z);
     }
   }
   return out;
@@ -90,7 +81,7 @@ ClockState Simulation<D>::clock_state() const {
   clock.strain_reference = t_ref_ - t_now_;
   clock.strain_at_reference = strain_ref_;
   clock.protocol_running = protocol_running_;
-  clock.held_shear_velocity = frame_.shear_velocity;
+  clock.held_shear_velocity = image_velocity();
   clock.collisions = collisions_;
   clock.events = events_;
   clock.last_collision = by_user_id(last_collision_);

@@ -1,0 +1,172 @@
+// The boundaries of the box, one per axis: the one place that knows what lies beyond each face —
+// the periodic image (x, z), the Lees–Edwards image sliding at U (y, thesis §1.4.2; U = 0 is plainly
+// periodic), or a flat wall at each end (thesis Appendix A.1).  It answers, for the engine, every
+// question that depends on it: where the image across a face sits and how fast it moves, whether a
+// cell at the edge of the grid has neighbours beyond it, the nearest image of a partner, how a
+// position is wrapped into the box, when a grain hits a wall, and what entering from an image does.
+// Flow along x, gradient along y, z plainly periodic (boundary/shear_frame.hpp).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "boundary/periodic_wrap.hpp"
+#include "boundary/shear_frame.hpp"
+#include "boundary/wall.hpp"
+#include "geometry/vec.hpp"
+
+namespace granule {
+
+enum class AxisBoundary : std::uint8_t {
+  kPeriodic,     // x and z without walls
+  kLeesEdwards,  // y without walls: images above and below slide at ±U (U may be 0)
+  kWalls,        // a flat wall at 0 and one at L
+};
+
+template <int D>
+class BoxBoundaries {
+ public:
+  using Vector = Vec<D>;
+
+  // Where the box's image one period away across a face sits relative to the box, and how fast its
+  // particles move along x relative to their originals.
+  struct FaceImage {
+    Vector position;
+    double velocity_x = 0.0;
+  };
+  // The image of a partner nearest to a particle: which vertical image (−1, 0, +1) and its shift.
+  struct PartnerImage {
+    int image_y = 0;
+    FaceImage shift;
+  };
+
+  BoxBoundaries() = default;
+  // Walls on the axes `walls` marks (faces 2·axis + side, side 0 at 0 and 1 at L), periodic or
+  // Lees–Edwards images elsewhere; `frame` holds L_x, L_y and the present image velocity.
+  BoxBoundaries(const std::array<bool, 3>& walls, const std::array<WallParams, 6>& wall, const ShearFrame& frame,
+                double length_z)
+      : wall_(wall), frame_(frame), length_{frame.length_x, frame.length_y, length_z} {
+    for (int a = 0; a < D; ++a) {
+      kind_[static_cast<std::size_t>(a)] = walls[static_cast<std::size_t>(a)] ? AxisBoundary::kWalls
+                                           : a == 1                           ? AxisBoundary::kLeesEdwards
+                                                                              : AxisBoundary::kPeriodic;
+    }
+  }
+
+  AxisBoundary kind(int axis) const { return kind_[static_cast<std::size_t>(axis)]; }
+  // Whether the grid has neighbours beyond its faces along `axis` (no: walls).
+  bool has_images(int axis) const { return kind(axis) != AxisBoundary::kWalls; }
+  // Whether images along `axis` move relative to the box (Lees–Edwards): a grain entering from
+  // one changes its velocity, and observers are told (EventObserver::on_boundary_crossing).
+  bool moving_images(int axis) const { return kind(axis) == AxisBoundary::kLeesEdwards; }
+  // Whether the x images are sheared, that is x and y both have images (the grid then follows the
+  // flow in ξ = x − s (y − L_y/2)).
+  bool sheared() const { return has_images(0) && has_images(1); }
+  double length(int axis) const { return length_[static_cast<std::size_t>(axis)]; }
+  const ShearFrame& frame() const { return frame_; }
+  // The image velocity U from now on (the shear protocol's present segment).
+  void set_image_velocity(double velocity) { frame_.shear_velocity = velocity; }
+  double& image_velocity() { return frame_.shear_velocity; }
+  double image_velocity() const { return frame_.shear_velocity; }
+  const WallParams& wall(int face) const { return wall_[static_cast<std::size_t>(face)]; }
+  std::array<WallParams, 6>& walls() { return wall_; }
+
+  // The image across the face of `axis` in `direction` (±1) at strain s; an axis with images only.
+  FaceImage image_across(int axis, int direction, double strain) const {
+    FaceImage image{};
+    if (axis == 1) {
+      const ImageShift shift = frame_.image_shift(0, direction, strain);
+      image.position[0] = shift.position.x;
+      image.position[1] = shift.position.y;
+      image.velocity_x = shift.velocity_x;
+    } else {
+      image.position[axis] = direction * length(axis);
+    }
+    return image;
+  }
+
+  // The nearest image of a partner at lab offset `offset`, in the sheared frame; unambiguous
+  // because cells are at least as large as a contact pair (cells/cell_grid.hpp).  None across walls.
+  PartnerImage nearest_image(const Vector& offset, double strain) const {
+    const double lx = length(0);
+    const double ly = length(1);
+    const double dx = offset[0];
+    const double dy = offset[1];
+    const int iy = !has_images(1) ? 0 : (dy > 0.5 * ly ? -1 : (dy < -0.5 * ly ? 1 : 0));
+    const ImageShift row = frame_.image_shift(0, iy, strain);
+    FaceImage shift{};
+    shift.position[0] = row.position.x;
+    shift.position[1] = row.position.y;
+    shift.velocity_x = row.velocity_x;
+    const double dxi = (dx + shift.position[0]) - strain * (dy + shift.position[1]);
+    if (has_images(0)) shift.position[0] -= lx * std::round(dxi / lx);
+    if constexpr (D == 3) {
+      if (has_images(2)) shift.position[2] = -length(2) * std::round(offset[2] / length(2));
+    }
+    return {iy, shift};
+  }
+
+  // A lab position (and its v_x) mapped into the box by the image rules, at strain s; idempotent
+  // inside.  Wall axes are never wrapped: a grain's centre stays a radius inside them.
+  void wrap_into_box(Vector& r, double& vx, double strain) const {
+    if (has_images(1)) {
+      frame_.wrap_into_box(r[0], r[1], vx, strain);  // x walls leave x inside: the wrap does not move it
+    } else if (has_images(0)) {
+      wrap_periodic(r[0], length(0));
+    }
+    if constexpr (D == 3) {
+      if (has_images(2)) wrap_periodic(r[2], length(2));
+    }
+  }
+  // The same, and x then into [0, L_x) in the sheared abscissa ξ, where the cell grid lives.
+  void wrap_into_grid(Vector& r, double& vx, double strain) const {
+    wrap_into_box(r, vx, strain);
+    if (has_images(1)) r[0] -= length(0) * std::floor(frame_.sheared_x(r[0], r[1], strain) / length(0));
+  }
+
+  // The earliest wall contact of a grain of radius `radius` now at r moving at v on `flight`
+  // (motion/motion.hpp), if earlier than `best`: its delay into `best` and its face into `face`.
+  // Contact is when the centre is one radius from the wall.
+  template <typename Flight>
+  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, double radius, double& best,
+                         int& face) const {
+    for (int axis = 0; axis < D; ++axis) {
+      if (has_images(axis)) continue;
+      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], radius, -1); t < best) {
+        best = t;
+        face = 2 * axis;
+      }
+      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1); t < best) {
+        best = t;
+        face = 2 * axis + 1;
+      }
+    }
+  }
+  // The unit normal of a face, from a grain touching it towards the wall.
+  static Vector wall_normal(int face) {
+    Vector k_hat;
+    k_hat[face / 2] = face % 2 == 0 ? -1.0 : 1.0;
+    return k_hat;
+  }
+  Vector wall_velocity(int face) const {
+    Vector v;
+    for (int a = 0; a < D; ++a) v[a] = wall(face).velocity[static_cast<std::size_t>(a)];
+    return v;
+  }
+  // How far a grain of radius `radius` at coordinate `position` is into the walls of `axis`
+  // beyond `tolerance` (> 0: it is), 0 on an axis with images.
+  double wall_penetration(int axis, double position, double radius, double tolerance) const {
+    if (has_images(axis)) return 0.0;
+    const double inside = radius - tolerance;
+    return std::max(inside - position, position - (length(axis) - inside));
+  }
+
+ private:
+  std::array<AxisBoundary, D> kind_{};
+  std::array<WallParams, 6> wall_{};
+  ShearFrame frame_;
+  std::array<double, 3> length_{1.0, 1.0, 1.0};
+};
+
+}  // namespace granule
