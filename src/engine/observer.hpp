@@ -33,11 +33,11 @@ struct CollisionRecord {
   int image_y = 0;               // which vertical image of disk 2 was hit (−1, 0, +1): it moves
                                  // at v_x + image_y U relative to disk 2 itself (§1.4.2)
   double image_velocity_x = 0.0; // that image's velocity relative to disk 2: image_y U at contact
-  // Rough grains only (zero for smooth ones): the tangential part of the momentum given to disk 2
-  // (the whole impulse is impulse·k̂ + tangential_impulse), and the change of the pair's total
-  // kinetic energy, translational plus rotational (≤ 0; 0 for smooth grains: use the impulse).
+  // The tangential part of the momentum given to disk 2 (rough grains only, zero for smooth ones:
+  // the whole impulse is impulse·k̂ + tangential_impulse), and the change of the pair's total
+  // kinetic energy, translational plus rotational (≤ 0).
   Vec<D> tangential_impulse;
-  double rough_energy_change = 0.0;
+  double energy_change = 0.0;
 };
 
 // A grain hitting a flat wall (SystemParams::walls): the wall at face 2·axis + side (side 0 at

@@ -6,9 +6,7 @@
 #include <stdexcept>
 
 #include "memory/prefetch_lines.hpp"
-#include "physics/collision_rule.hpp"
 #include "physics/collision_time.hpp"
-#include "physics/rough_collision_rule.hpp"
 
 namespace granule {
 
@@ -201,30 +199,18 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     return false;
   }
   const Vector k_hat = (1.0 / norm(r)) * r;
-  const CollisionLaw law = collision_law();
-  double e = law.restitution;
-  if (law.keeps_history()) {
-    e = law.restitution_at(t_now_, last_collision_[at(i)], last_collision_[at(j)]);
-    last_collision_[at(i)] = t_now_;
-    last_collision_[at(j)] = t_now_;
-  }
-  const double m1 = mass_of(i);
-  const double m2 = mass_of(j);
-  PostCollisionVelocities<D> after;
-  RoughImpulse<D> rough{};
-  double rough_energy_change = 0.0;
-  if (params_.roughness.rough) {
-    const double before = kinetic_energy(i, v1) + kinetic_energy(j, v2);
-    after = {v1, v2};
-    rough = collide_rough(i, j, after.v1, after.v2, k_hat, e);
-    rough_energy_change = kinetic_energy(i, after.v1) + kinetic_energy(j, after.v2) - before;
-  } else {
-    after = mass_.empty() ? collide(v1, v2, k_hat, e) : collide(v1, v2, k_hat, e, m1, m2);
-  }
-  set_velocity_now(i, after.v1);
-  Vector v2_after = after.v2;
+  const CollisionLaw law = pair_law();
+  const double e = contact_restitution(law, i, j);
+  ContactSide<D> first = contact_side(i, v1);
+  ContactSide<D> second = contact_side(j, v2);
+  const double energy_before = observers_.empty() ? 0.0 : first.kinetic_energy() + second.kinetic_energy();
+  const ContactOutcome<D> outcome = law.collide(first, second, k_hat, e);
+  set_velocity_now(i, first.velocity);
+  store_spin(i, first);
+  Vector v2_after = second.velocity;
   v2_after[0] -= shift.velocity_x;
   set_velocity_now(j, v2_after);
+  store_spin(j, second);
   ++particles_[at(i)].count;
   ++particles_[at(j)].count;
   ++collisions_;
@@ -235,28 +221,23 @@ bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
     record.first = user_id(i);
     record.second = user_id(j);
     record.first_position = ri;
-    const double radius = 0.5 * (diameter_.empty() ? params_.diameter : diameter_[at(i)]);
-    record.contact_point = record.first_position + radius * k_hat;
+    record.contact_point = record.first_position + radius_of(i) * k_hat;
     double unused_vx = 0.0;
     boundaries_.wrap_into_box(record.contact_point, unused_vx, s);
     record.first_velocity_before = v1;
     record.second_velocity_before = v2;
     record.second_velocity_before[0] = v2[0] - shift.velocity_x;
-    record.first_velocity_after = after.v1;
+    record.first_velocity_after = first.velocity;
     record.second_velocity_after = velocity_now(j);
     record.contact_normal = k_hat;
     record.relative_velocity = v1 - v2;
-    if (params_.roughness.rough) {
-      record.impulse = dot(rough.normal, k_hat);
-      record.tangential_impulse = rough.tangential;
-      record.rough_energy_change = rough_energy_change;
-    } else {
-      record.impulse = mass_.empty() ? normal_impulse(v1 - v2, k_hat, e) : normal_impulse(v1 - v2, k_hat, e, m1, m2);
-    }
+    record.impulse = outcome.normal_impulse;
+    record.tangential_impulse = outcome.impulse.tangential;
+    record.energy_change = first.kinetic_energy() + second.kinetic_energy() - energy_before;
     record.restitution = e;
     record.contact_distance = contact_distance(i, j);
-    record.first_mass = m1;
-    record.second_mass = m2;
+    record.first_mass = first.mass;
+    record.second_mass = second.mass;
     record.image_y = iy;
     record.image_velocity_x = shift.velocity_x;
     for (EventObserver<D>* observer : observers_) observer->on_collision(record);

@@ -37,7 +37,6 @@
 #include "events/timed_actions.hpp"
 #include "motion/motion.hpp"
 #include "physics/collision_law.hpp"
-#include "physics/rough_collision_rule.hpp"
 
 namespace granule {
 
@@ -225,15 +224,25 @@ class Simulation {
   double radius_of(std::int32_t i) const {
     return 0.5 * (diameter_.empty() ? params_.diameter : diameter_[static_cast<std::size_t>(i)]);
   }
-  // Particle i as one side of a rough contact (its spin, inverse mass, a²/I = 1/(q m)).
-  RoughBody<D> rough_body(std::int32_t i, const Vector& velocity) const;
-  // The rough-grain collision of i and j (their velocities v1, v2 — j's image-shifted — and the
-  // contact normal); returns the impulse on j and leaves the new velocities in v1, v2.
-  RoughImpulse<D> collide_rough(std::int32_t i, std::int32_t j, Vector& v1, Vector& v2, const Vector& k_hat, double e);
+  // Particle i moving at `velocity` as one side of a contact (with its spin, if grains are rough),
+  // and its spin after one.
+  ContactSide<D> contact_side(std::int32_t i, const Vector& velocity) const;
+  void store_spin(std::int32_t i, const ContactSide<D>& side) {
+    if (side.spins()) set_spin(i, side.spin);
+  }
   void execute_wall_hit(std::int32_t i, int face);
-  // ½ m v² + ½ I ω² of particle i moving at `velocity` (I = q m σ²/4 for rough grains).
-  double kinetic_energy(std::int32_t i, const Vector& velocity) const;
-  CollisionLaw collision_law() const { return {params_.restitution, params_.tc_duration}; }
+  // The collision laws (physics/collision_law.hpp): between grains, and between a grain and the
+  // wall at `face` (its own restitutions, the grains' TC model).
+  CollisionLaw pair_law() const {
+    return {params_.restitution, params_.tc_duration, {params_.roughness.tangential_restitution, params_.roughness.friction}, mass_.empty()};
+  }
+  CollisionLaw wall_law(int face) const {
+    const WallParams& wall = boundaries_.wall(face);
+    return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true};
+  }
+  // The restitution `law` gives a contact of i with j (j < 0: a wall) now; the one place where
+  // the TC model's history is read and written.
+  double contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j);
   // Contact distance σ_ij = (σ_i + σ_j)/2 (σ for a monodisperse run).
   double contact_distance(std::int32_t i, std::int32_t j) const {
     return diameter_.empty() ? params_.diameter : 0.5 * (diameter_[static_cast<std::size_t>(i)] + diameter_[static_cast<std::size_t>(j)]);

@@ -1,6 +1,6 @@
-// The contacts that go beyond smooth spheres (ARCHITECTURE.md, "Spin, walls and gravity"): the
-// spin of rough grains and their collisions (physics/rough_collision_rule.hpp), and grains hitting
-// flat walls (thesis Appendix A.1: a reflection executed as a boundary event).
+// Contacts as the collision law sees them (physics/collision_law.hpp): a grain as one side of a
+// contact, with its spin when grains are rough; the TC model's history; and grains hitting flat
+// walls (thesis Appendix A.1: a reflection executed as a boundary event, under the same law).
 #include <limits>
 
 #include "engine/simulation.hpp"
@@ -30,86 +30,60 @@ void Simulation<D>::set_spin(std::int32_t i, const Spin<D>& w) {
 }
 
 template <int D>
-double Simulation<D>::kinetic_energy(std::int32_t i, const Vector& velocity) const {
-  const double m = mass_of(i);
-  double energy = 0.5 * m * norm2(velocity);
-  if (params_.roughness.rough) {
-    const double radius = radius_of(i);
-    energy += 0.5 * params_.roughness.inertia_factor * m * radius * radius * spin_norm2(spin(i));
+ContactSide<D> Simulation<D>::contact_side(std::int32_t i, const Vector& velocity) const {
+  ContactSide<D> side{velocity, {}, radius_of(i), mass_of(i), 0.0};
+  if (!spin_[0].empty()) {  // rough grains
+    side.spin = spin(i);
+    side.inertia_factor = params_.roughness.inertia_factor;
   }
-  return energy;
+  return side;
 }
 
 template <int D>
-RoughBody<D> Simulation<D>::rough_body(std::int32_t i, const Vector& velocity) const {
-  const double m = mass_of(i);
-  RoughBody<D> body{velocity, {}, radius_of(i), 1.0 / m, 0.0};
-  if (params_.roughness.rough) {
-    body.spin = spin(i);
-    body.radius2_over_inertia = 1.0 / (params_.roughness.inertia_factor * m);  // a²/I with I = q m a²
-  }
-  return body;
-}
-
-template <int D>
-RoughImpulse<D> Simulation<D>::collide_rough(std::int32_t i, std::int32_t j, Vector& v1, Vector& v2,
-                                             const Vector& k_hat, double e) {
-  RoughBody<D> first = rough_body(i, v1);
-  RoughBody<D> second = rough_body(j, v2);
-  const TangentialLaw law{params_.roughness.tangential_restitution, params_.roughness.friction};
-  const RoughImpulse<D> impulse = rough_impulse(first, second, k_hat, e, law);
-  apply_rough_impulse(first, second, k_hat, impulse);
-  v1 = first.velocity;
-  v2 = second.velocity;
-  set_spin(i, first.spin);
-  set_spin(j, second.spin);
-  return impulse;
+double Simulation<D>::contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) {
+  if (!law.keeps_history()) return law.restitution;
+  double& last_i = last_collision_[at(i)];
+  double& last_j = last_collision_[at(j < 0 ? i : j)];
+  const double e = law.restitution_at(t_now_, last_i, last_j);
+  last_i = t_now_;
+  last_j = t_now_;
+  return e;
 }
 
 template <int D>
 void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
-  const int axis = face / 2;
-  const WallParams& wall = params_.wall[static_cast<std::size_t>(face)];
-  Vector k_hat;  // from the grain towards the wall
-  k_hat[axis] = face % 2 == 0 ? -1.0 : 1.0;
-  Vector wall_velocity;
-  for (int a = 0; a < D; ++a) wall_velocity[a] = wall.velocity[static_cast<std::size_t>(a)];
+  const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
   const Vector before = velocity_now(i);
   // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
   if (dot(before, k_hat) <= 0.0) {
     predict(i);
     return;
   }
-  double e = wall.restitution;
-  if (params_.tc_duration > 0.0) {  // the TC model holds at walls too (ARCHITECTURE.md)
-    e = CollisionLaw{e, params_.tc_duration}.restitution_at(t_now_, last_collision_[at(i)], last_collision_[at(i)]);
-    last_collision_[at(i)] = t_now_;
-  }
-  // The wall is a body of infinite mass and moment of inertia moving at its own velocity; a smooth
-  // grain behaves as one of infinite moment of inertia (rough_body).
-  RoughBody<D> grain = rough_body(i, before);
-  RoughBody<D> surface{wall_velocity, {}, 0.0, 0.0, 0.0};
-  const double energy_before = kinetic_energy(i, before);
-  const TangentialLaw law{wall.tangential_restitution, std::numeric_limits<double>::infinity()};
-  const RoughImpulse<D> impulse = rough_impulse(grain, surface, k_hat, e, law);
-  apply_rough_impulse(grain, surface, k_hat, impulse);
+  // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
+  // the same law as grains (the TC model holds at walls too).
+  const CollisionLaw law = wall_law(face);
+  const double e = contact_restitution(law, i, -1);
+  ContactSide<D> grain = contact_side(i, before);
+  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
+  const double energy_before = grain.kinetic_energy();
+  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, e);
   set_velocity_now(i, grain.velocity);
-  if (params_.roughness.rough) set_spin(i, grain.spin);
+  store_spin(i, grain);
   ++particles_[at(i)].count;  // its pending partners' predictions are stale
 
   if (!observers_.empty()) {
     WallCollisionRecord<D> record;
     record.time = time();
     record.particle = user_id(i);
-    record.axis = axis;
+    record.axis = face / 2;
     record.side = face % 2;
     record.position = position_now(i);
     record.velocity_before = before;
     record.velocity_after = grain.velocity;
-    record.impulse_on_wall = impulse.total();
-    record.energy_change = kinetic_energy(i, grain.velocity) - energy_before;
+    record.impulse_on_wall = outcome.impulse.total();
+    record.energy_change = grain.kinetic_energy() - energy_before;
     record.restitution = e;
-    record.mass = mass_of(i);
+    record.mass = grain.mass;
     for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
   }
   predict(i);
@@ -119,15 +93,13 @@ void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
 // simulation.cpp, once).
 template Spin<2> Simulation<2>::spin(std::int32_t) const;
 template void Simulation<2>::set_spin(std::int32_t, const Spin<2>&);
-template double Simulation<2>::kinetic_energy(std::int32_t, const Vec<2>&) const;
-template RoughBody<2> Simulation<2>::rough_body(std::int32_t, const Vec<2>&) const;
-template RoughImpulse<2> Simulation<2>::collide_rough(std::int32_t, std::int32_t, Vec<2>&, Vec<2>&, const Vec<2>&, double);
+template ContactSide<2> Simulation<2>::contact_side(std::int32_t, const Vec<2>&) const;
+template double Simulation<2>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t);
 template void Simulation<2>::execute_wall_hit(std::int32_t, int);
 template Spin<3> Simulation<3>::spin(std::int32_t) const;
 template void Simulation<3>::set_spin(std::int32_t, const Spin<3>&);
-template double Simulation<3>::kinetic_energy(std::int32_t, const Vec<3>&) const;
-template RoughBody<3> Simulation<3>::rough_body(std::int32_t, const Vec<3>&) const;
-template RoughImpulse<3> Simulation<3>::collide_rough(std::int32_t, std::int32_t, Vec<3>&, Vec<3>&, const Vec<3>&, double);
+template ContactSide<3> Simulation<3>::contact_side(std::int32_t, const Vec<3>&) const;
+template double Simulation<3>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t);
 template void Simulation<3>::execute_wall_hit(std::int32_t, int);
 
 }  // namespace granule

@@ -23,7 +23,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 template <int D>
 struct WallLog final : EventObserver<D> {
-  bool rough = false;  // grains report their own energy change (rough_energy_change)
+  bool rough = false;  // rough grains: the record's own energy change (smooth: thesis eq 1.2's loss)
   std::vector<WallCollisionRecord<D>> hits;
   Vec<D> impulse_on_walls;
   double wall_energy = 0.0, collision_energy = 0.0, magnitude = 0.0;
@@ -38,7 +38,7 @@ struct WallLog final : EventObserver<D> {
     ++collisions;
     const double vn = dot(r.relative_velocity, r.contact_normal);
     // Smooth grains of unit mass: (1 − e²)/4 v_n² lost (eq 1.2); rough ones report their own.
-    const double change = rough ? r.rough_energy_change : -0.25 * (1.0 - r.restitution * r.restitution) * vn * vn;
+    const double change = rough ? r.energy_change : -0.25 * (1.0 - r.restitution * r.restitution) * vn * vn;
     collision_energy += change;
     magnitude += std::abs(change);
   }
