@@ -37,13 +37,6 @@ Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
 }
 
 template <int D>
-void Simulation<D>::set_velocity_now(std::int32_t i, const Vector& v) {
-  // A new flight through the position now (particle_record.hpp).
-  ParticleRecord<D>& p = particles_[at(i)];
-  motion_.start_flight(p.r, p.v, v, t_now_);
-}
-
-template <int D>
 Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, const ParticleState& state,
                           const ClockState& clock)
     : params_(params),
@@ -156,100 +149,6 @@ void Simulation<D>::start_production(const SystemParams& production) {
 }
 
 template <int D>
-void Simulation<D>::execute_crossing(std::int32_t i, EventKind kind) {
-  const std::int32_t old_cell = slot(i).cell();
-  std::array<int, D> cell = cell_coordinates(old_cell);
-  const int axis = crossing_axis(kind);
-  const int direction = crossing_direction(kind);
-  int& c = cell[static_cast<std::size_t>(axis)];
-  c += direction;
-  if (c < 0 || c >= grid_.count(axis)) {
-    // Out through a face of the box: in from the image on the other side.
-    c -= direction * grid_.count(axis);
-    enter_from_image(i, axis, direction);
-  }
-  std::int32_t new_cell = 0;
-  if constexpr (D == 2) {
-    new_cell = grid_.index(cell[0], cell[1]);
-  } else {
-    new_cell = grid_.index(cell[0], cell[1], cell[2]);
-  }
-  lists_.remove(particles_, i, old_cell);
-  lists_.insert(particles_, i, new_cell);
-  slot(i).set_cell(new_cell);
-  predict_after_crossing(i, axis, direction);
-}
-
-template <int D>
-bool Simulation<D>::execute_collision(std::int32_t i, std::int32_t j) {
-  const double s = strain();
-  const Vector ri = position_now(i);
-  const Vector rj = position_now(j);
-  const auto [iy, shift] = nearest_image(rj - ri);
-
-  Vector r;
-  for (int a = 0; a < D; ++a) r[a] = rj[a] + shift.position[a] - ri[a];
-  const Vector v1 = velocity_now(i);
-  Vector v2 = velocity_now(j);
-  v2[0] += shift.velocity_x;
-  // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
-  // round-off; a pair that is no longer approaching must not collide.
-  if (!approaching(r, v2 - v1)) {
-    predict(i);
-    return false;
-  }
-  const Vector k_hat = (1.0 / norm(r)) * r;
-  const CollisionLaw law = pair_law();
-  const double e = contact_restitution(law, i, j);
-  ContactSide<D> first = contact_side(i, v1);
-  ContactSide<D> second = contact_side(j, v2);
-  const double energy_before = observers_.empty() ? 0.0 : first.kinetic_energy() + second.kinetic_energy();
-  const ContactOutcome<D> outcome = law.collide(first, second, k_hat, e);
-  set_velocity_now(i, first.velocity);
-  store_spin(i, first);
-  Vector v2_after = second.velocity;
-  v2_after[0] -= shift.velocity_x;
-  set_velocity_now(j, v2_after);
-  store_spin(j, second);
-  ++particles_[at(i)].count;
-  ++particles_[at(j)].count;
-  ++collisions_;
-
-  if (!observers_.empty()) {
-    CollisionRecord<D> record;
-    record.time = time();
-    record.first = user_id(i);
-    record.second = user_id(j);
-    record.first_position = ri;
-    record.contact_point = record.first_position + radius_of(i) * k_hat;
-    double unused_vx = 0.0;
-    boundaries_.wrap_into_box(record.contact_point, unused_vx, s);
-    record.first_velocity_before = v1;
-    record.second_velocity_before = v2;
-    record.second_velocity_before[0] = v2[0] - shift.velocity_x;
-    record.first_velocity_after = first.velocity;
-    record.second_velocity_after = velocity_now(j);
-    record.contact_normal = k_hat;
-    record.relative_velocity = v1 - v2;
-    record.impulse = outcome.normal_impulse;
-    record.tangential_impulse = outcome.impulse.tangential;
-    record.energy_change = first.kinetic_energy() + second.kinetic_energy() - energy_before;
-    record.restitution = e;
-    record.contact_distance = contact_distance(i, j);
-    record.first_mass = first.mass;
-    record.second_mass = second.mass;
-    record.image_y = iy;
-    record.image_velocity_x = shift.velocity_x;
-    for (EventObserver<D>* observer : observers_) observer->on_collision(record);
-  }
-  queue_.prefetch_removal(j);
-  predict(i);
-  queue_.prefetch_removal(j, 2);  // the first slot has arrived meanwhile
-  predict(j);
-  return true;
-}
-
-template <int D>
 StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) {
   const std::int64_t rebase_interval = kRebaseEventsPerParticle * params_.particles;
   if (collisions_ >= until_collisions) return StopReason::kCollisionsReached;
@@ -304,15 +203,15 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       if (!candidate_valid(i)) {
         predict(i);  // the partner has collided since: stale
       } else {
-        collided = execute_collision(i, j);
+        collided = commit(plan_collision(i, j));
       }
     } else if (kind == EventKind::kNone) {
       return StopReason::kNoEvents;  // only reachable when every time is +inf
     } else if (is_wall_hit(kind)) {
-      execute_wall_hit(i, wall_face(kind));
+      commit(plan_wall_hit(i, wall_face(kind)));
       hit_wall = true;
     } else {
-      execute_crossing(i, kind);
+      commit(plan_crossing(i, kind));
     }
     if (rebase_due) {
 #ifdef GRANULE_PARANOID

@@ -24,6 +24,7 @@
 #include "cells/cell_grid.hpp"
 #include "cells/exact_divisor.hpp"
 #include "engine/collapse_detector.hpp"
+#include "engine/event_plans.hpp"
 #include "engine/observer.hpp"
 #include "engine/particle_record.hpp"
 #include "engine/scan_types.hpp"
@@ -184,12 +185,17 @@ class Simulation {
     return D == 2 && params_.particles >= kPrefetchRecordsFrom && grid_.cell_count() <= kPrefetchRecordsCells;
   }
   void predict(std::int32_t i);
-  void execute_crossing(std::int32_t i, EventKind kind);
-  // Particle i leaves the box through the face of `axis` in `direction` and comes in from the image
-  // on the other side (thesis §1.4.2 across a Lees–Edwards face: with its velocity shifted by ∓U).
-  void enter_from_image(std::int32_t i, int axis, int direction);
-  // Returns true if a physical collision was executed.
-  bool execute_collision(std::int32_t i, std::int32_t j);
+  // The events, each planned from the state without changing it and then committed
+  // (engine/event_plans.hpp, engine/simulation_events.cpp).
+  CrossingPlan<D> plan_crossing(std::int32_t i, EventKind kind) const;
+  void commit(const CrossingPlan<D>& plan);
+  CollisionPlan<D> plan_collision(std::int32_t i, std::int32_t j) const;
+  bool commit(const CollisionPlan<D>& plan);  // true if a physical collision was executed
+  WallHitPlan<D> plan_wall_hit(std::int32_t i, int face) const;
+  void commit(const WallHitPlan<D>& plan);
+  // The flight of particle i through its position now with a new velocity, and storing it.
+  FlightState<D> flight_through_now(std::int32_t i, const Vector& velocity) const;
+  void set_flight(std::int32_t i, const FlightState<D>& flight);
   void realign_sheared_grid();
   // When |strain| reaches strain_period/2 at the present image velocity.
   void schedule_realignment();
@@ -213,11 +219,10 @@ class Simulation {
     }
   }
   Vector position_now(std::int32_t i) const;
-  // Position of particle i at `time` on its present flight (parabolic under gravity), its
-  // velocity now, and a new velocity from now on (particle_record.hpp).
+  // Position of particle i at `time` on its present flight (parabolic under gravity) and its
+  // velocity now (particle_record.hpp).
   Vector position_at(std::int32_t i, double time) const;
   Vector velocity_now(std::int32_t i) const;
-  void set_velocity_now(std::int32_t i, const Vector& v);
   Spin<D> spin(std::int32_t i) const;
   void set_spin(std::int32_t i, const Spin<D>& w);
   double mass_of(std::int32_t i) const { return mass_.empty() ? 1.0 : mass_[static_cast<std::size_t>(i)]; }
@@ -230,7 +235,6 @@ class Simulation {
   void store_spin(std::int32_t i, const ContactSide<D>& side) {
     if (side.spins()) set_spin(i, side.spin);
   }
-  void execute_wall_hit(std::int32_t i, int face);
   // The collision laws (physics/collision_law.hpp): between grains, and between a grain and the
   // wall at `face` (its own restitutions, the grains' TC model).
   CollisionLaw pair_law() const {
@@ -240,9 +244,10 @@ class Simulation {
     const WallParams& wall = boundaries_.wall(face);
     return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true};
   }
-  // The restitution `law` gives a contact of i with j (j < 0: a wall) now; the one place where
-  // the TC model's history is read and written.
-  double contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j);
+  // The restitution `law` gives a contact of i with j (j < 0: a wall) now, and marking the
+  // contact: the two places where the TC model's history is read and written.
+  double contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) const;
+  void mark_contact(std::int32_t i, std::int32_t j);
   // Contact distance σ_ij = (σ_i + σ_j)/2 (σ for a monodisperse run).
   double contact_distance(std::int32_t i, std::int32_t j) const {
     return diameter_.empty() ? params_.diameter : 0.5 * (diameter_[static_cast<std::size_t>(i)] + diameter_[static_cast<std::size_t>(j)]);

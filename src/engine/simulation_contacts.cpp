@@ -1,6 +1,5 @@
 // Contacts as the collision law sees them (physics/collision_law.hpp): a grain as one side of a
-// contact, with its spin when grains are rough; the TC model's history; and grains hitting flat
-// walls (thesis Appendix A.1: a reflection executed as a boundary event, under the same law).
+// contact, with its spin when grains are rough, and the TC model's history of contacts.
 #include <limits>
 
 #include "engine/simulation.hpp"
@@ -40,53 +39,16 @@ ContactSide<D> Simulation<D>::contact_side(std::int32_t i, const Vector& velocit
 }
 
 template <int D>
-double Simulation<D>::contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) {
+double Simulation<D>::contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) const {
   if (!law.keeps_history()) return law.restitution;
-  double& last_i = last_collision_[at(i)];
-  double& last_j = last_collision_[at(j < 0 ? i : j)];
-  const double e = law.restitution_at(t_now_, last_i, last_j);
-  last_i = t_now_;
-  last_j = t_now_;
-  return e;
+  return law.restitution_at(t_now_, last_collision_[at(i)], last_collision_[at(j < 0 ? i : j)]);
 }
 
 template <int D>
-void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
-  const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
-  const Vector before = velocity_now(i);
-  // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
-  if (dot(before, k_hat) <= 0.0) {
-    predict(i);
-    return;
-  }
-  // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
-  // the same law as grains (the TC model holds at walls too).
-  const CollisionLaw law = wall_law(face);
-  const double e = contact_restitution(law, i, -1);
-  ContactSide<D> grain = contact_side(i, before);
-  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
-  const double energy_before = grain.kinetic_energy();
-  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, e);
-  set_velocity_now(i, grain.velocity);
-  store_spin(i, grain);
-  ++particles_[at(i)].count;  // its pending partners' predictions are stale
-
-  if (!observers_.empty()) {
-    WallCollisionRecord<D> record;
-    record.time = time();
-    record.particle = user_id(i);
-    record.axis = face / 2;
-    record.side = face % 2;
-    record.position = position_now(i);
-    record.velocity_before = before;
-    record.velocity_after = grain.velocity;
-    record.impulse_on_wall = outcome.impulse.total();
-    record.energy_change = grain.kinetic_energy() - energy_before;
-    record.restitution = e;
-    record.mass = grain.mass;
-    for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
-  }
-  predict(i);
+void Simulation<D>::mark_contact(std::int32_t i, std::int32_t j) {
+  if (last_collision_.empty()) return;  // no TC model
+  last_collision_[at(i)] = t_now_;
+  last_collision_[at(j < 0 ? i : j)] = t_now_;
 }
 
 // The members defined in this file, for both dimensions (the class is instantiated in
@@ -94,12 +56,12 @@ void Simulation<D>::execute_wall_hit(std::int32_t i, int face) {
 template Spin<2> Simulation<2>::spin(std::int32_t) const;
 template void Simulation<2>::set_spin(std::int32_t, const Spin<2>&);
 template ContactSide<2> Simulation<2>::contact_side(std::int32_t, const Vec<2>&) const;
-template double Simulation<2>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t);
-template void Simulation<2>::execute_wall_hit(std::int32_t, int);
+template double Simulation<2>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t) const;
+template void Simulation<2>::mark_contact(std::int32_t, std::int32_t);
 template Spin<3> Simulation<3>::spin(std::int32_t) const;
 template void Simulation<3>::set_spin(std::int32_t, const Spin<3>&);
 template ContactSide<3> Simulation<3>::contact_side(std::int32_t, const Vec<3>&) const;
-template double Simulation<3>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t);
-template void Simulation<3>::execute_wall_hit(std::int32_t, int);
+template double Simulation<3>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t) const;
+template void Simulation<3>::mark_contact(std::int32_t, std::int32_t);
 
 }  // namespace granule

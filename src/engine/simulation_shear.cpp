@@ -1,7 +1,6 @@
-// The Lees–Edwards side of the engine (ARCHITECTURE.md, "Shear protocols"): images of partners and
-// of disks leaving the box, the image offset, the re-alignment of the sheared grid, and the changes
-// of the image velocity U that follow the shear protocol segment by segment (the last two are
-// global timed actions beside the event queue).
+// The Lees–Edwards side of the engine (ARCHITECTURE.md, "Shear protocols"): the image offset, the
+// re-alignment of the sheared grid, and the changes of the image velocity U that follow the shear
+// protocol segment by segment (the last two are global timed actions beside the event queue).
 #include <cmath>
 #include <limits>
 
@@ -76,21 +75,6 @@ void Simulation<D>::realign_sheared_grid() {
   rebuild();
 }
 
-template <int D>
-void Simulation<D>::enter_from_image(std::int32_t i, int axis, int direction) {
-  const auto image = boundaries_.image_across(axis, direction, strain());
-  ParticleRecord<D>& p = particles_[at(i)];
-  for (int a = 0; a < D; ++a) p.r[a] -= image.position[a];
-  if (!boundaries_.moving_images(axis)) return;
-  Vector v = velocity_now(i);
-  const double vx_before = v[0];
-  v[0] -= image.velocity_x;
-  set_velocity_now(i, v);
-  if (observers_.empty()) return;
-  const BoundaryCrossingRecord record{time(), user_id(i), direction, vx_before, v[0]};
-  for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
-}
-
 // The members defined in this file, for both dimensions (the class is instantiated in
 // simulation.cpp, once).
 template double Simulation<2>::shear_offset() const;
@@ -99,13 +83,11 @@ template void Simulation<2>::enter_shear_segment(const ShearSegment&);
 template void Simulation<2>::change_image_velocity(double);
 template void Simulation<2>::repredict_after_shear_change();
 template void Simulation<2>::realign_sheared_grid();
-template void Simulation<2>::enter_from_image(std::int32_t, int, int);
 template double Simulation<3>::shear_offset() const;
 template void Simulation<3>::schedule_realignment();
 template void Simulation<3>::enter_shear_segment(const ShearSegment&);
 template void Simulation<3>::change_image_velocity(double);
 template void Simulation<3>::repredict_after_shear_change();
 template void Simulation<3>::realign_sheared_grid();
-template void Simulation<3>::enter_from_image(std::int32_t, int, int);
 
 }  // namespace granule

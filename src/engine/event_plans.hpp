@@ -1,0 +1,72 @@
+// An event's outcome as plain data: computed from the state without changing it (the "plan": what
+// would happen), then applied by a commit that writes it and predicts again.  A plan reads only
+// the records, spins and TC history of the particles it names, the clocks and the boundaries;
+// its commit writes those particles' records, spins, histories and cells, and their event slots.
+// That split is what a speculative parallel engine needs: plans can be made ahead and checked
+// against the collision counters of the particles they read (ARCHITECTURE.md, "The event loop").
+#pragma once
+
+#include <cstdint>
+
+#include "boundary/box_boundaries.hpp"
+#include "geometry/vec.hpp"
+#include "physics/collision_law.hpp"
+
+namespace granule {
+
+// A particle's flight as its record holds it: position and velocity at the clock base.
+template <int D>
+struct FlightState {
+  Vec<D> r;
+  Vec<D> v;
+};
+
+// A cell crossing: the cell entered and, out through a face of the box, the flight after entering
+// from the image on the other side (thesis §1.4.2 across a Lees–Edwards face).
+template <int D>
+struct CrossingPlan {
+  std::int32_t particle = -1;
+  int axis = 0;
+  int direction = 1;
+  std::int32_t new_cell = 0;
+  bool enters_from_image = false;
+  bool from_moving_image = false;  // a Lees–Edwards image: v_x changes, observers are told
+  FlightState<D> flight;           // when it enters from an image
+  double velocity_x_before = 0.0;
+  double velocity_x_after = 0.0;
+};
+
+// A collision of `first` and `second`: unless the pair has stopped approaching (re-validated,
+// Bannerman et al. 2014), both new flights and what observers are told.
+template <int D>
+struct CollisionPlan {
+  std::int32_t first = -1;
+  std::int32_t second = -1;
+  bool approaching = false;
+  FlightState<D> first_flight;
+  FlightState<D> second_flight;
+  ContactSide<D> first_side;   // after the contact (the second's velocity as its image's)
+  ContactSide<D> second_side;
+  ContactOutcome<D> outcome;
+  typename BoxBoundaries<D>::PartnerImage image;  // of the second, as the first meets it
+  Vec<D> first_position;
+  Vec<D> k_hat;
+  Vec<D> first_velocity_before;
+  Vec<D> second_velocity_before;  // its image's
+  double energy_before = 0.0;     // both sides, translational plus rotational
+};
+
+// A grain hitting the wall at `face`, unless it no longer moves into it.
+template <int D>
+struct WallHitPlan {
+  std::int32_t particle = -1;
+  int face = 0;
+  bool approaching = false;
+  FlightState<D> flight;
+  ContactSide<D> side;  // the grain after the hit
+  ContactOutcome<D> outcome;
+  Vec<D> velocity_before;
+  double energy_before = 0.0;
+};
+
+}  // namespace granule

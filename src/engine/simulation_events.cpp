@@ -1,0 +1,230 @@
+// The three kinds of event, each in two parts (engine/event_plans.hpp): a plan computed from the
+// state without changing it, and a commit that applies it and predicts the particles' next
+// events.  Crossings of cell faces and of the box's faces (thesis §1.4.2), collisions of grains
+// (thesis eq 1.2, Fig 1.3) and hits of flat walls (thesis Appendix A.1), the last two under the
+// collision law (physics/collision_law.hpp).
+#include "engine/simulation.hpp"
+
+namespace granule {
+
+namespace {
+inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
+}  // namespace
+
+template <int D>
+FlightState<D> Simulation<D>::flight_through_now(std::int32_t i, const Vector& velocity) const {
+  FlightState<D> flight{particles_[at(i)].r, particles_[at(i)].v};
+  motion_.start_flight(flight.r, flight.v, velocity, t_now_);
+  return flight;
+}
+
+template <int D>
+void Simulation<D>::set_flight(std::int32_t i, const FlightState<D>& flight) {
+  particles_[at(i)].r = flight.r;
+  particles_[at(i)].v = flight.v;
+}
+
+template <int D>
+CrossingPlan<D> Simulation<D>::plan_crossing(std::int32_t i, EventKind kind) const {
+  CrossingPlan<D> plan;
+  plan.particle = i;
+  plan.axis = crossing_axis(kind);
+  plan.direction = crossing_direction(kind);
+  std::array<int, D> cell = cell_coordinates(slot(i).cell());
+  int& c = cell[static_cast<std::size_t>(plan.axis)];
+  c += plan.direction;
+  if (c < 0 || c >= grid_.count(plan.axis)) {
+    // Out through a face of the box: in from the image on the other side.
+    c -= plan.direction * grid_.count(plan.axis);
+    plan.enters_from_image = true;
+    const auto image = boundaries_.image_across(plan.axis, plan.direction, strain());
+    plan.flight = {particles_[at(i)].r, particles_[at(i)].v};
+    for (int a = 0; a < D; ++a) plan.flight.r[a] -= image.position[a];
+    if (boundaries_.moving_images(plan.axis)) {
+      plan.from_moving_image = true;
+      Vector v = velocity_now(i);
+      plan.velocity_x_before = v[0];
+      v[0] -= image.velocity_x;
+      plan.velocity_x_after = v[0];
+      motion_.start_flight(plan.flight.r, plan.flight.v, v, t_now_);
+    }
+  }
+  if constexpr (D == 2) {
+    plan.new_cell = grid_.index(cell[0], cell[1]);
+  } else {
+    plan.new_cell = grid_.index(cell[0], cell[1], cell[2]);
+  }
+  return plan;
+}
+
+template <int D>
+void Simulation<D>::commit(const CrossingPlan<D>& plan) {
+  const std::int32_t i = plan.particle;
+  if (plan.enters_from_image) set_flight(i, plan.flight);
+  if (plan.from_moving_image && !observers_.empty()) {
+    const BoundaryCrossingRecord record{time(), user_id(i), plan.direction, plan.velocity_x_before, plan.velocity_x_after};
+    for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
+  }
+  lists_.remove(particles_, i, slot(i).cell());
+  lists_.insert(particles_, i, plan.new_cell);
+  slot(i).set_cell(plan.new_cell);
+  predict_after_crossing(i, plan.axis, plan.direction);
+}
+
+template <int D>
+CollisionPlan<D> Simulation<D>::plan_collision(std::int32_t i, std::int32_t j) const {
+  CollisionPlan<D> plan;
+  plan.first = i;
+  plan.second = j;
+  const Vector ri = position_now(i);
+  const Vector rj = position_now(j);
+  plan.image = nearest_image(rj - ri);
+  const auto& shift = plan.image.shift;
+  Vector r;
+  for (int a = 0; a < D; ++a) r[a] = rj[a] + shift.position[a] - ri[a];
+  const Vector v1 = velocity_now(i);
+  Vector v2 = velocity_now(j);
+  v2[0] += shift.velocity_x;
+  // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
+  // round-off; a pair that is no longer approaching must not collide.
+  if (!approaching(r, v2 - v1)) return plan;
+  plan.approaching = true;
+  plan.first_position = ri;
+  plan.first_velocity_before = v1;
+  plan.second_velocity_before = v2;
+  plan.k_hat = (1.0 / norm(r)) * r;
+  const CollisionLaw law = pair_law();
+  plan.first_side = contact_side(i, v1);
+  plan.second_side = contact_side(j, v2);
+  if (!observers_.empty()) plan.energy_before = plan.first_side.kinetic_energy() + plan.second_side.kinetic_energy();
+  plan.outcome = law.collide(plan.first_side, plan.second_side, plan.k_hat, contact_restitution(law, i, j));
+  plan.first_flight = flight_through_now(i, plan.first_side.velocity);
+  Vector v2_after = plan.second_side.velocity;
+  v2_after[0] -= shift.velocity_x;  // its own velocity, not its image's
+  plan.second_flight = flight_through_now(j, v2_after);
+  return plan;
+}
+
+template <int D>
+bool Simulation<D>::commit(const CollisionPlan<D>& plan) {
+  const std::int32_t i = plan.first;
+  const std::int32_t j = plan.second;
+  if (!plan.approaching) {
+    predict(i);
+    return false;
+  }
+  set_flight(i, plan.first_flight);
+  store_spin(i, plan.first_side);
+  set_flight(j, plan.second_flight);
+  store_spin(j, plan.second_side);
+  mark_contact(i, j);
+  ++particles_[at(i)].count;
+  ++particles_[at(j)].count;
+  ++collisions_;
+
+  if (!observers_.empty()) {
+    const auto& shift = plan.image.shift;
+    CollisionRecord<D> record;
+    record.time = time();
+    record.first = user_id(i);
+    record.second = user_id(j);
+    record.first_position = plan.first_position;
+    record.contact_point = plan.first_position + radius_of(i) * plan.k_hat;
+    double unused_vx = 0.0;
+    boundaries_.wrap_into_box(record.contact_point, unused_vx, strain());
+    record.first_velocity_before = plan.first_velocity_before;
+    record.second_velocity_before = plan.second_velocity_before;
+    record.second_velocity_before[0] = plan.second_velocity_before[0] - shift.velocity_x;
+    record.first_velocity_after = plan.first_side.velocity;
+    record.second_velocity_after = velocity_now(j);
+    record.contact_normal = plan.k_hat;
+    record.relative_velocity = plan.first_velocity_before - plan.second_velocity_before;
+    record.impulse = plan.outcome.normal_impulse;
+    record.tangential_impulse = plan.outcome.impulse.tangential;
+    record.energy_change = plan.first_side.kinetic_energy() + plan.second_side.kinetic_energy() - plan.energy_before;
+    record.restitution = plan.outcome.restitution;
+    record.contact_distance = contact_distance(i, j);
+    record.first_mass = plan.first_side.mass;
+    record.second_mass = plan.second_side.mass;
+    record.image_y = plan.image.image_y;
+    record.image_velocity_x = shift.velocity_x;
+    for (EventObserver<D>* observer : observers_) observer->on_collision(record);
+  }
+  queue_.prefetch_removal(j);
+  predict(i);
+  queue_.prefetch_removal(j, 2);  // the first slot has arrived meanwhile
+  predict(j);
+  return true;
+}
+
+template <int D>
+WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
+  WallHitPlan<D> plan;
+  plan.particle = i;
+  plan.face = face;
+  const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
+  plan.velocity_before = velocity_now(i);
+  // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
+  if (dot(plan.velocity_before, k_hat) <= 0.0) return plan;
+  plan.approaching = true;
+  // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
+  // the same law as grains (the TC model holds at walls too).
+  const CollisionLaw law = wall_law(face);
+  plan.side = contact_side(i, plan.velocity_before);
+  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
+  if (!observers_.empty()) plan.energy_before = plan.side.kinetic_energy();
+  plan.outcome = law.collide(plan.side, wall, k_hat, contact_restitution(law, i, -1));
+  plan.flight = flight_through_now(i, plan.side.velocity);
+  return plan;
+}
+
+template <int D>
+void Simulation<D>::commit(const WallHitPlan<D>& plan) {
+  const std::int32_t i = plan.particle;
+  if (!plan.approaching) {
+    predict(i);
+    return;
+  }
+  set_flight(i, plan.flight);
+  store_spin(i, plan.side);
+  mark_contact(i, -1);
+  ++particles_[at(i)].count;  // its pending partners' predictions are stale
+
+  if (!observers_.empty()) {
+    WallCollisionRecord<D> record;
+    record.time = time();
+    record.particle = user_id(i);
+    record.axis = plan.face / 2;
+    record.side = plan.face % 2;
+    record.position = position_now(i);
+    record.velocity_before = plan.velocity_before;
+    record.velocity_after = plan.side.velocity;
+    record.impulse_on_wall = plan.outcome.impulse.total();
+    record.energy_change = plan.side.kinetic_energy() - plan.energy_before;
+    record.restitution = plan.outcome.restitution;
+    record.mass = plan.side.mass;
+    for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
+  }
+  predict(i);
+}
+
+// The members defined in this file, for both dimensions (the class is instantiated in
+// simulation.cpp, once).
+template FlightState<2> Simulation<2>::flight_through_now(std::int32_t, const Vec<2>&) const;
+template void Simulation<2>::set_flight(std::int32_t, const FlightState<2>&);
+template CrossingPlan<2> Simulation<2>::plan_crossing(std::int32_t, EventKind) const;
+template void Simulation<2>::commit(const CrossingPlan<2>&);
+template CollisionPlan<2> Simulation<2>::plan_collision(std::int32_t, std::int32_t) const;
+template bool Simulation<2>::commit(const CollisionPlan<2>&);
+template WallHitPlan<2> Simulation<2>::plan_wall_hit(std::int32_t, int) const;
+template void Simulation<2>::commit(const WallHitPlan<2>&);
+template FlightState<3> Simulation<3>::flight_through_now(std::int32_t, const Vec<3>&) const;
+template void Simulation<3>::set_flight(std::int32_t, const FlightState<3>&);
+template CrossingPlan<3> Simulation<3>::plan_crossing(std::int32_t, EventKind) const;
+template void Simulation<3>::commit(const CrossingPlan<3>&);
+template CollisionPlan<3> Simulation<3>::plan_collision(std::int32_t, std::int32_t) const;
+template bool Simulation<3>::commit(const CollisionPlan<3>&);
+template WallHitPlan<3> Simulation<3>::plan_wall_hit(std::int32_t, int) const;
+template void Simulation<3>::commit(const WallHitPlan<3>&);
+
+}  // namespace granule
