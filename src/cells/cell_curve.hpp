@@ -2,7 +2,7 @@
 // longest side, recursively, and the halves are visited one after the other (a Morton order that
 // works for any counts, with no cell skipped or visited twice and no table).  Cells close on the
 // curve are close in space, so particles numbered in this order keep their neighbours' records a
-// few cache lines and one huge page away (issue 18; Simulation::renumber).
+// few cache lines and one huge page away (Simulation::renumber).
 #pragma once
 
 #include <array>

@@ -1,15 +1,15 @@
 // One record per particle with what a neighbour's collision test reads: position and velocity,
 // and the link of its cell list; with its collision counter.  A test then touches one record, 48
-// bytes for disks and 64 (one cache line, aligned to it) for spheres, where it read six separate
-// arrays before (issue 18; docs/performance.md).  The record also holds the particle's collision
-// candidate (partner and the partner's counter), read at its own events: in a sphere's record
-// those 8 bytes were padding, and out of the EventSlot they leave it 16 bytes (its pending event's
-// time, kind and cell, and the calendar's link; events/event_slot.hpp).
+// bytes for disks and 64 (one cache line, aligned to it) for spheres, rather than six separate
+// arrays (docs/performance.md).  The record also holds the particle's collision candidate (partner
+// and the partner's counter), read at its own events: in a sphere's record those 8 bytes fill what
+// alignment would leave empty, and out of the EventSlot they leave it 16 bytes (its pending
+// event's time, kind and cell, and the calendar's link; events/event_slot.hpp).
 //
 // The record holds the particle's state extrapolated back to the engine's clock base (t = 0 of
 // `t_now_`) along its present flight — a "false position" — so the position now is r + v·t_now
-// (+ g·t_now²/2 under gravity), and no local time is stored: a flight's state is written only when
-// its velocity changes.  The clock is re-based every few events per particle
+// (+ g·t_now²/2 in a field: motion/motion.hpp), and no local time is stored: a flight's state is
+// written only when its velocity changes.  The clock is re-based every few events per particle
 // (engine/simulation.cpp), which keeps |v·t_now| to a few free paths and the round-off of
 // r + v·t_now at that of a position.
 #pragma once

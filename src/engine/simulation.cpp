@@ -206,7 +206,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
         collided = commit(plan_collision(i, j));
       }
     } else if (kind == EventKind::kNone) {
-      return StopReason::kNoEvents;  // only reachable when every time is +inf
+      return StopReason::kNoEvents;  // its time is +inf, so the stop above returns first
     } else if (is_wall_hit(kind)) {
       commit(plan_wall_hit(i, wall_face(kind)));
       hit_wall = true;

@@ -1,12 +1,13 @@
 // The event loop of the thesis's Appendix A for disks (D = 2) and spheres (D = 3), monodisperse
-// or polydisperse: one pending event per particle (its earliest collision or cell crossing) in a
-// calendar queue (events/event_queue.hpp); lazy free flight with per-particle local
-// times; stale events caught by collision counters; periodic re-basing of the clock; a sheared
-// cell grid that follows the mean Lees–Edwards flow (boundary/shear_frame.hpp); and a time-
-// dependent image velocity U(t) in constant segments (boundary/shear_protocol.hpp), its changes
-// and the grid's re-alignments kept as global timed actions beside the queue; and, per axis, flat
-// walls instead of images, parabolic flights under gravity and spinning rough grains
-// (ARCHITECTURE.md, "Spin, walls and gravity").
+// or polydisperse: one pending event per particle (its earliest collision, cell crossing or wall
+// hit) in a calendar queue (events/event_queue.hpp); lazy flights stored as false positions at a
+// common clock base (engine/particle_record.hpp); stale events caught by collision counters;
+// periodic re-basing of the clock; a sheared cell grid that follows the mean Lees–Edwards flow
+// (boundary/shear_frame.hpp); and a time-dependent image velocity U(t) in constant segments
+// (boundary/shear_protocol.hpp), its changes and the grid's re-alignments kept as global timed
+// actions beside the queue.  The physics comes from three policies (ARCHITECTURE.md, "Physics as
+// policies"): the boundaries per axis (boundary/box_boundaries.hpp), the motion between events
+// (motion/motion.hpp) and the collision law (physics/collision_law.hpp).
 #pragma once
 
 #include <algorithm>

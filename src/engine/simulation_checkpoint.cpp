@@ -42,7 +42,7 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
 }
 
 // The fixed parameters of spin, walls and gravity a run has, by checkpoint name (none for a plain
-// run, whose checkpoints keep the content they had before these existed).
+// run: its checkpoint holds no such entries).
 std::map<std::string, double> surface_parameters(const SystemParams& p, int dimension) {
   std::map<std::string, double> out;
   if (p.roughness.rough) {
@@ -91,8 +91,7 @@ void check_surfaces_match(const StateArchive& archive, const std::string& prefix
   }
 }
 
-// The fields of the particle records a checkpoint holds, one array each (the names of the arrays
-// they were before the records), by name and an accessor.
+// The fields of the particle records a checkpoint holds, one array each, by name and an accessor.
 template <int D, typename Visit>
 void visit_record_fields(Visit&& visit) {
   visit("x", [](auto& p) -> auto& { return p.r.x; });
@@ -179,7 +178,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
 
   visit_saved_state(*this, [&](const char* name, const auto& value) {
     // Per-particle diameters and masses exist only in polydisperse runs, spins only for rough
-    // grains: other checkpoints have no such entries (and keep the content they had before).
+    // grains: other checkpoints have no such entries.
     if constexpr (!std::is_arithmetic_v<std::decay_t<decltype(value)>>) {
       if (value.empty() && optional_array(name)) return;
     }
@@ -203,7 +202,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_integer(prefix + "protocol_running", protocol_running_ ? 1 : 0);
   archive.put_scalar(prefix + "shear_segment_action", actions_.time_of(TimedAction::kShearSegment));
   // The engine's numbering (absent while it is the user's: checkpoints of runs that never
-  // renumber keep the content they had before).
+  // renumber hold no such entries).
   if (!user_id_.empty()) {
     archive.put_view(prefix + "particle_id", user_id_);
     archive.put_integer(prefix + "events_since_renumber", events_since_renumber_);

@@ -1,6 +1,6 @@
 // The engine's numbering of its particles (Simulation::renumber): along the cell curve, so that
 // the particles of neighbouring cells sit in neighbouring records and slots, which prediction reads
-// together (issue 18; docs/performance.md, "Particles renumbered along the cells").
+// together (docs/performance.md, "Particles renumbered along the cells").
 #include <utility>
 
 #include "cells/cell_curve.hpp"

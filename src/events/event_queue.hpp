@@ -1,8 +1,8 @@
 // The pending event of every particle, ordered by (time, particle id): a calendar of time
 // buckets (Brown 1988; Smallenburg, Eur. Phys. J. E 45, 22 (2022), keeps his events so), with the
-// events of the current bucket in a small binary heap.  Re-scheduling a particle is O(1) expected
-// where the binary heap of every particle it replaced cost O(log N) cache misses (a quarter of the
-// run time at N = 10⁵: docs/performance.md).
+// events of the current bucket in a small binary heap.  Re-scheduling a particle is O(1) expected,
+// where a binary heap of every particle costs O(log N) cache misses (a quarter of the run time at
+// N = 10⁵: docs/performance.md).
 //
 // The calendar's lists cover one year ahead of the current bucket, and there are at most
 // kMostLists of them, so that their heads stay in the cache; events beyond the year wait unsorted

@@ -1,8 +1,8 @@
 // What only a particle's own events read and write, in one 16-byte slot (four per cache line): the
 // time of its pending event and its link in the calendar queue (the queue's part, private to it),
-// the event's kind and the particle's cell.  An event reads, and a prediction writes, one line
-// where the engine's 24-byte slot and the queue's 16-byte node cost two lines and 40 bytes (issue
-// 18; docs/performance.md).  The collision candidate lives in the particle's record
+// the event's kind and the particle's cell.  An event reads, and a prediction writes, one line,
+// where a separate engine slot and queue node would cost two lines and 40 bytes
+// (docs/performance.md).  The collision candidate lives in the particle's record
 // (engine/particle_record.hpp).
 #pragma once
 

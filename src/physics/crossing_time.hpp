@@ -1,6 +1,7 @@
-// When a particle leaves an interval whose edge moves relative to it along a parabola.
-// Used for cell crossings on the sheared (Lees–Edwards) cell grid, where the sheared abscissa
-// ξ(τ) = x − s(t)(y − y_c) of a free particle is quadratic in the delay τ.
+// When a particle leaves an interval whose edge moves relative to it along a parabola: cell
+// crossings on the sheared (Lees–Edwards) cell grid, where the sheared abscissa
+// ξ(τ) = x − s(t)(y − y_c) of a free particle is quadratic in the delay τ, and crossings and wall
+// hits of flights in a uniform field (motion/uniform_field.hpp).
 #pragma once
 
 #include <cmath>
