@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/collisional_stress.hpp"
-#include "analysis/free_paths.hpp"
-#include "analysis/impact_parameters.hpp"
+#include "observers/collisional_stress.hpp"
+#include "observers/free_paths.hpp"
+#include "observers/impact_parameters.hpp"
 #include "cells/cell_grid.hpp"
 #include "engine/simulation.hpp"
 #include "init/initial_state.hpp"

@@ -74,7 +74,7 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
   snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", start.snapshot_frames);
   last_snapshot_events_ = sim_->events();
   measurements_ = std::make_unique<RunMeasurements<D>>(config, out_);
-  measurements_->continue_from_frame(*sim_, start.fields_frames, start.fields_frame_at_start);
+  measurements_->continue_from_frame(*sim_, {start.fields_frames, start.fields_frame_at_start});
   write_timeseries();
 }
 

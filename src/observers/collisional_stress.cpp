@@ -1,4 +1,4 @@
-#include "analysis/collisional_stress.hpp"
+#include "observers/collisional_stress.hpp"
 
 #include <algorithm>
 #include <cmath>

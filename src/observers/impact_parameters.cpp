@@ -1,4 +1,4 @@
-#include "analysis/impact_parameters.hpp"
+#include "observers/impact_parameters.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "analysis/free_paths.hpp"
+#include "observers/free_paths.hpp"
 
 #include <algorithm>
 #include <cmath>
