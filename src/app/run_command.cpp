@@ -17,6 +17,7 @@
 #include "app/plot_run_picture.hpp"
 #include "app/run_console.hpp"
 #include "driver/run_session.hpp"
+#include "driver/run_start.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/fields_file.hpp"
@@ -61,82 +62,24 @@ RunConfig configuration(const RunOptions& options, bool resume, const std::strin
   return *parsed.config;
 }
 
-CellGrid engine_grid(const RunConfig& config) {
-  const CellGridChoice choice = choose_cell_grid(engine_grid_request(config));
-  if (!choice.grid) throw CommandFailure{kExitBadInput, choice.error};
-  return *choice.grid;
-}
-
-// initial.from: frame K of another run, which must hold the same particles in the same box.
-ParticleState state_from_run(const RunConfig& config) {
-  const InitialSource& from = *config.initial_from;
-  const std::int64_t frame = from.frame.value_or(-1);
-  SnapshotRead read;
+// A refusal of the shared start (driver/run_start.hpp) as the command's exit code 2.
+template <typename F>
+auto or_bad_input(F&& f) {
   try {
-    std::string path = from.directory + "/snapshots.h5";
-    if (!std::filesystem::exists(path) && std::filesystem::exists(path + ".partial")) path += ".partial";
-    read = read_snapshot(path, frame);
-  } catch (const std::exception& error) {
-    throw CommandFailure{kExitBadInput, fmt::format("initial.from = \"{}\", initial.frame = {}: {}", from.directory,
-                                                    from.frame ? std::to_string(*from.frame) : "last", error.what())};
+    return f();
+  } catch (const driver::ConfigError& error) {
+    throw CommandFailure{kExitBadInput, error.what()};
   }
-  const SystemParams& theirs = read.metadata.system;
-  const SystemParams& ours = config.system;
-  if (theirs.dimension != ours.dimension || theirs.particles != ours.particles || theirs.diameter != ours.diameter ||
-      theirs.length_x != ours.length_x || theirs.length_y != ours.length_y ||
-      (ours.dimension == 3 && theirs.length_z != ours.length_z)) {
-    throw CommandFailure{kExitBadInput,
-                         fmt::format("initial.from = \"{}\" holds d = {}, N = {}, σ = {}, box [{}, {}, {}]; this run has "
-                                     "d = {}, N = {}, σ = {}, box [{}, {}, {}]: system.* must match the run it starts from",
-                                     from.directory, theirs.dimension, theirs.particles, theirs.diameter, theirs.length_x,
-                                     theirs.length_y, theirs.length_z, ours.dimension, ours.particles, ours.diameter,
-                                     ours.length_x, ours.length_y, ours.length_z)};
-  }
-  // A frame is a state of its own boundaries and grains: its centres keep a radius from its walls
-  // only, and only rough frames carry spins.
-  if (theirs.walls != ours.walls || theirs.roughness.rough != ours.roughness.rough) {
-    throw CommandFailure{kExitBadInput,
-                         fmt::format("initial.from = \"{}\" is a run with {} and {} grains; this run has {} and {} grains: "
-                                     "boundary.kind / boundary.wall_axes and system.tangential_restitution must agree",
-                                     from.directory, theirs.has_walls() ? "walls" : "no walls",
-                                     theirs.roughness.rough ? "rough" : "smooth", ours.has_walls() ? "walls" : "no walls",
-                                     ours.roughness.rough ? "rough" : "smooth")};
-  }
-  // The sizes and masses are those this configuration draws from its seed: the frame's must agree.
-  const ParticleSizes sizes = particle_sizes(config);
-  if (sizes.diameter != read.frame.particles.diameter || sizes.mass != read.frame.particles.mass) {
-    throw CommandFailure{kExitBadInput, fmt::format("initial.from = \"{}\" holds other particle diameters or masses than "
-                                                    "system.diameters / system.masses / seed give", from.directory)};
-  }
-  return read.frame.particles;
 }
 
 template <int D>
 std::unique_ptr<RunSession<D>> new_session(const RunConfig& config, const CellGrid& grid, const RunOptions& options) {
   const std::string& out = options.out_dir;
   check_memory_for_run(config, grid);
-  // Until production starts the images move at the velocity of the initial profile: U(0) of the
-  // protocol, or 0 for the static gas of §4.3 (initial.shear_profile = false).
-  const double protocol_start = ShearProtocol(config.system.shear_velocity, config.system.shear_history).velocity(0.0);
-  ClockState clock;
-  clock.held_shear_velocity = config.initial_shear_profile || config.initial_from ? protocol_start : 0.0;
-  ParticleState state;
-  if (config.initial_from) {
-    state = state_from_run(config);
-  } else {
-    InitialStateResult initial = make_initial_state(config.system, config.initial_temperature, config.seed,
-                                                    config.placement, clock.held_shear_velocity, particle_sizes(config),
-                                                    {config.initial_shear_profile, config.initial_rotational_temperature});
-    if (!initial.error.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("{} (system.{} = {:.4g})", initial.error,
-                                                      config.system.dimension == 2 ? "area_fraction" : "packing_fraction",
-                                                      config.packing_fraction)};
-    }
-    state = std::move(initial.state);
-  }
+  const driver::RunStart start = or_bad_input([&] { return driver::run_start(config); });
   prepare_new_output_directory(out, options.force);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  return std::make_unique<RunSession<D>>(config, grid, out, state, clock);
+  return std::make_unique<RunSession<D>>(config, grid, out, start);
 }
 
 template <int D>
@@ -203,8 +146,8 @@ std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const
   if (const std::string fields = existing_output(aside, "fields.h5"); !fields.empty() && config.fields.enabled) {
     for (const double frame_c : read_fields_frame_c(fields)) {
       if (frame_c > c) break;
-      ++start.fields_frames;
-      start.fields_frame_at_start = frame_c == c;
+      ++start.kept.fields_frames;
+      start.kept.fields_frame_at_start = frame_c == c;
     }
     std::filesystem::copy_file(fields, out + "/fields.h5.partial");
   }
@@ -300,7 +243,7 @@ int run(const RunOptions& options) {
   const InterruptSignals signals;
   try {
     const RunConfig config = configuration(options, resume, out);
-    const CellGrid grid = engine_grid(config);
+    const CellGrid grid = or_bad_input([&] { return driver::run_cell_grid(config); });
     return config.system.dimension == 3 ? run_in<3>(options, config, grid) : run_in<2>(options, config, grid);
   } catch (const CommandFailure& failure) {
     fmt::print(stderr, "granule run: error: {}\n", failure.message);
