@@ -181,7 +181,7 @@ int analyze_f1(const F1CommandOptions& o) {
       fmt::print(stderr, "granule analyze f1: error: no window had enough samples; nothing written\n");
       return kExitNoWindow;
     }
-    for (const std::string& path : write_f1_outputs(o.out, run, results)) fmt::print("wrote {}\n", path);
+    for (const std::string& path : write_f1_outputs(o.out, run, results, thesis_comparison_csv(system, results))) fmt::print("wrote {}\n", path);
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
     throw;
   } catch (const std::bad_alloc&) {  // exit 5, by main

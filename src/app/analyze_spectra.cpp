@@ -4,7 +4,6 @@
 // dominant wavevector against L0 = l/√(1−ẽ²) (1.1) with its significance against uncorrelated positions
 // (spectra/mode_significance.hpp).  3D maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -24,8 +23,8 @@
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
-#include "io/hdf5_util.hpp"
 #include "io/snapshot_file.hpp"
+#include "io/spectra_file.hpp"
 #include "app/spectra_console.hpp"
 #include "spectra/dominant_mode.hpp"
 #include "spectra/power_spectra.hpp"
@@ -36,12 +35,11 @@ namespace granule::app {
 namespace {
 
 using namespace granule::spectra;
+using namespace granule::spectra_file;
 
 constexpr int kMaxModeLimit = 2048;
 constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
 constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
-constexpr const char* kFormat = "granule-spectra";
-constexpr int kFormatVersion = 2;  // 2: every run has S(k), its band and the significance of dominant modes
 
 struct SpectraOptions {
   std::string snapshots;
@@ -96,169 +94,7 @@ std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t tot
   return frames;
 }
 
-// The spectra, in output order: name in the file, the map of PowerMaps and the sum of AnnulusSpectrum
-// it comes from, and its power for uncorrelated positions.
-struct FieldChoice {
-  const char* name;
-  const std::vector<double> PowerMaps::*map;
-  const std::vector<double> AnnulusSpectrum::*annulus;
-  ModeNoise (*noise)(const PowerMaps&);
-};
-constexpr FieldChoice kFields[] = {
-    {"R", &PowerMaps::density, &AnnulusSpectrum::density, [](const PowerMaps& p) { return p.density_noise(); }},
-    {"Px", &PowerMaps::momentum_x, &AnnulusSpectrum::momentum_x, [](const PowerMaps& p) { return p.momentum_component_noise(0); }},
-    {"Py", &PowerMaps::momentum_y, &AnnulusSpectrum::momentum_y, [](const PowerMaps& p) { return p.momentum_component_noise(1); }},
-    {"P", &PowerMaps::momentum, &AnnulusSpectrum::momentum, [](const PowerMaps& p) { return p.momentum_noise(); }}};
-constexpr FieldChoice kFields3d[] = {
-    kFields[0], kFields[1], kFields[2],
-    {"Pz", &PowerMaps::momentum_z, &AnnulusSpectrum::momentum_z, [](const PowerMaps& p) { return p.momentum_component_noise(2); }},
-    kFields[3]};
-
-// The columns of a dominant mode after its indices, in the file (dominant/<field>/<column>) and the CSV.
-constexpr std::pair<const char*, double DominantMode::*> kDominantColumns[] = {
-    {"kx", &DominantMode::kx}, {"ky", &DominantMode::ky}, {"kz", &DominantMode::kz}, {"k", &DominantMode::k},
-    {"angle_deg", &DominantMode::angle_deg}, {"length", &DominantMode::length}, {"power", &DominantMode::power},
-    {"power_over_ideal_gas", &DominantMode::power_over_ideal_gas}, {"independent_modes", &DominantMode::independent_modes},
-    {"noise_p_value", &DominantMode::noise_p_value}, {"noise_threshold", &DominantMode::noise_threshold}};
-
-std::span<const FieldChoice> fields_of(int dimension) {
-  return dimension == 3 ? std::span<const FieldChoice>(kFields3d) : std::span<const FieldChoice>(kFields);
-}
-
-// The shell-averaged spectra: name, and the member of ShellStructureFactor.
-constexpr std::pair<const char*, const std::vector<double> ShellStructureFactor::*> kShellAverages[] = {
-    {"S_R", &ShellStructureFactor::density}, {"S_R_sd", &ShellStructureFactor::density_sd},
-    {"S_P", &ShellStructureFactor::momentum}, {"S_P_sd", &ShellStructureFactor::momentum_sd}};
-
-// The spectra file as it grows: `<out>.partial`, flushed after its layout and after every frame,
-// given its final name only once its close succeeded (h5::PartialFile); a failure leaves the
-// `.partial` with the frames done so far.  Every HDF5 call is checked and throws IoError.
-class SpectraFile {
- public:
-  SpectraFile(const std::string& path, const SpectraOptions& options, const SnapshotMetadata& metadata,
-              const TransformOptions& transform, double dk, const AnnulusSpectrum& bins)
-      : partial_(path, kFormat, kFormatVersion, kVersion),
-        file_(partial_.get()),
-        depth_(metadata.system.dimension == 3),
-        rings_(depth_ ? "shell_" : "annulus_") {
-    write_layout(options, metadata, transform, dk, bins);
-    partial_.flush();
-  }
-
-  // Root attributes (parameters of the analysis and of the run) and the empty per-frame datasets.
-  void write_layout(const SpectraOptions& options, const SnapshotMetadata& metadata, const TransformOptions& transform,
-                    double dk, const AnnulusSpectrum& bins) {
-    using namespace h5;
-    const SystemParams& s = metadata.system;
-    write_string_attribute(file_, "source", std::filesystem::absolute(options.snapshots).string());
-    write_string_attribute(file_, "method", options.method);
-    write_attribute(file_, "max_mode", H5T_NATIVE_INT, &transform.max_mode);
-    write_attribute(file_, "dk", H5T_NATIVE_DOUBLE, &dk);
-    const int subtract = options.subtract_shear ? 1 : 0, exclude = options.exclude_ky_axis ? 1 : 0;
-    write_attribute(file_, "subtract_shear_profile", H5T_NATIVE_INT, &subtract);
-    write_attribute(file_, "exclude_ky_axis_from_Px", H5T_NATIVE_INT, &exclude);
-    const int grid = fft_grid_size(transform.max_mode, transform.gridding);
-    write_attribute(file_, "kernel_width", H5T_NATIVE_INT, &transform.gridding.kernel_width);
-    write_attribute(file_, "fft_grid", H5T_NATIVE_INT, &grid);
-    write_string_attribute(file_, "normalization", "rho(k) = (1/2pi) sum_j exp(i k.r_j), p(k) = (1/2pi) sum_j v_j exp(i k.r_j) (thesis 3.4-3.5)");
-    write_attribute(file_, "particles", H5T_NATIVE_INT64, &s.particles);
-    write_attribute(file_, "diameter", H5T_NATIVE_DOUBLE, &s.diameter);
-    const double box[3] = {s.length_x, s.length_y, s.length_z};
-    write_attribute(file_, "box", H5T_NATIVE_DOUBLE, box, depth_ ? 3 : 2);
-    write_attribute(file_, depth_ ? "packing_fraction" : "area_fraction", H5T_NATIVE_DOUBLE, &metadata.packing_fraction);
-    if (depth_) write_attribute(file_, "dimension", H5T_NATIVE_INT, &s.dimension);
-    write_attribute(file_, "restitution", H5T_NATIVE_DOUBLE, &s.restitution);
-    write_string_attribute(file_, "boundary", metadata.boundary);
-    write_attribute(file_, "shear_velocity", H5T_NATIVE_DOUBLE, &s.shear_velocity);
-    const double l = mean_free_path(s), l0 = cluster_length(s);
-    write_attribute(file_, "mean_free_path", H5T_NATIVE_DOUBLE, &l);
-    write_attribute(file_, "L0", H5T_NATIVE_DOUBLE, &l0);
-    write_string_attribute(file_, "length_over_L0_compares",
-                           depth_ ? "2pi/|k| of the dominant mode over L0 = l/sqrt(1-e^2) (1.1), l = 1/(sqrt2 pi n sigma^2)"
-                                  : "2pi/|k| of the dominant mode over L0 = l/sqrt(1-e^2) (1.1), l = LxLy/(2 N sigma) (3.1.2)");
-    write_attribute(file_, "false_alarm", H5T_NATIVE_DOUBLE, &options.false_alarm);
-    write_string_attribute(file_, "null_hypothesis",
-                           "uncorrelated positions: power/level of one mode ~ sum_i share_i Exp(1); "
-                           "noise_p_value = 1 - (1 - Q(s))^K over K independent modes (+-k once)");
-
-    const auto side = static_cast<hsize_t>(2 * transform.max_mode + 1);
-    const auto rings = static_cast<hsize_t>(bins.k.size());
-    write_dataset(file_, (rings_ + "k").c_str(), {rings}, bins.k);
-    for (const char* name : {"frame_index", "collisions_per_particle", "time", "shear_offset", "tilt"}) {
-      add_frames(file_, name, std::string(name) == "frame_index" ? H5T_STD_I64LE : H5T_IEEE_F64LE, {});
-    }
-    add_frames(file_, "kx", H5T_IEEE_F64LE, {side, side});
-    add_frames(file_, "ky", H5T_IEEE_F64LE, {side, side});
-    add_frames(file_, (rings_ + "modes").c_str(), H5T_STD_I64LE, {rings});
-    add_frames(file_, (rings_ + "P_modes").c_str(), H5T_STD_I64LE, {rings});
-    for (const auto& [name, member] : kShellAverages) add_frames(file_, name, H5T_IEEE_F64LE, {rings});
-    for (const char* name : {"ideal_R", "ideal_P"}) add_frames(file_, name, H5T_IEEE_F64LE, {});
-    Handle(create_group(file_, "dominant"), H5Gclose).close();
-    for (const FieldChoice& field : fields_of(s.dimension)) {
-      add_frames(file_, field.name, H5T_IEEE_F64LE, {side, side});
-      add_frames(file_, (rings_ + field.name).c_str(), H5T_IEEE_F64LE, {rings});
-      const std::string group = std::string("dominant/") + field.name;
-      Handle(create_group(file_, group.c_str()), H5Gclose).close();
-      for (const char* column : {"l", "m", "n", "significant"}) {
-        if (depth_ || column[0] != 'n') add_frames(file_, (group + "/" + column).c_str(), H5T_STD_I32LE, {});
-      }
-      for (const auto& [column, member] : kDominantColumns) {
-        if (depth_ || std::string(column) != "kz") add_frames(file_, (group + "/" + column).c_str(), H5T_IEEE_F64LE, {});
-      }
-      add_frames(file_, (group + "/length_over_L0").c_str(), H5T_IEEE_F64LE, {});
-    }
-  }
-
-  void append(std::int64_t index, const SnapshotFrame& frame, const PowerMaps& maps, const AnnulusSpectrum& annulus,
-              const std::vector<DominantMode>& dominant, double l0) {
-    using namespace h5;
-    const auto k = static_cast<hsize_t>(partial_.frames());
-    // The plane n = 0 (k_z = 0) of a 3D map; the whole map in 2D.
-    const std::size_t plane = static_cast<std::size_t>(maps.modes.max_mode_z()) * maps.modes.plane_count();
-    append_frame(file_, "frame_index", H5T_NATIVE_INT64, &index, k);
-    append_frame(file_, "time", H5T_NATIVE_DOUBLE, &frame.clock.time, k);
-    append_frame(file_, "collisions_per_particle", H5T_NATIVE_DOUBLE, &frame.collisions_per_particle, k);
-    append_frame(file_, "shear_offset", H5T_NATIVE_DOUBLE, &frame.shear_offset, k);
-    append_frame(file_, "tilt", H5T_NATIVE_DOUBLE, &maps.lattice.tilt, k);
-    append_frame(file_, "kx", H5T_NATIVE_DOUBLE, maps.kx.data() + plane, k);
-    append_frame(file_, "ky", H5T_NATIVE_DOUBLE, maps.ky.data() + plane, k);
-    append_frame(file_, (rings_ + "modes").c_str(), H5T_NATIVE_INT64, annulus.modes.data(), k);
-    append_frame(file_, (rings_ + "P_modes").c_str(), H5T_NATIVE_INT64, annulus.momentum_modes.data(), k);
-    const ShellStructureFactor averages = shell_structure_factor(annulus, maps);
-    for (const auto& [name, member] : kShellAverages) append_frame(file_, name, H5T_NATIVE_DOUBLE, (averages.*member).data(), k);
-    const double ideal_momentum = maps.ideal_momentum();
-    append_frame(file_, "ideal_R", H5T_NATIVE_DOUBLE, &maps.ideal_density, k);
-    append_frame(file_, "ideal_P", H5T_NATIVE_DOUBLE, &ideal_momentum, k);
-    const std::span<const FieldChoice> fields = fields_of(maps.lattice.dimension);
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      const FieldChoice& field = fields[f];
-      append_frame(file_, field.name, H5T_NATIVE_DOUBLE, (maps.*field.map).data() + plane, k);
-      append_frame(file_, (rings_ + field.name).c_str(), H5T_NATIVE_DOUBLE, (annulus.*field.annulus).data(), k);
-      const std::string group = std::string("dominant/") + field.name + "/";
-      const DominantMode& d = dominant[f];
-      const double ratio = d.length / l0;
-      const int significant = d.significant ? 1 : 0;
-      append_frame(file_, (group + "l").c_str(), H5T_NATIVE_INT, &d.l, k);
-      append_frame(file_, (group + "m").c_str(), H5T_NATIVE_INT, &d.m, k);
-      if (depth_) append_frame(file_, (group + "n").c_str(), H5T_NATIVE_INT, &d.n, k);
-      append_frame(file_, (group + "significant").c_str(), H5T_NATIVE_INT, &significant, k);
-      for (const auto& [column, member] : kDominantColumns) {
-        if (depth_ || std::string(column) != "kz") append_frame(file_, (group + column).c_str(), H5T_NATIVE_DOUBLE, &(d.*member), k);
-      }
-      append_frame(file_, (group + "length_over_L0").c_str(), H5T_NATIVE_DOUBLE, &ratio, k);
-    }
-    partial_.end_frame();
-  }
-  void publish() { partial_.publish(); }
-
- private:
-  h5::PartialFile partial_;
-  hid_t file_;  // partial_'s identifier, owned by it
-  bool depth_;         // a 3D run
-  std::string rings_;  // "annulus_" (2D) or "shell_" (3D)
-};
-
-int bad_input(const std::string& message) {
+int bad_spectra_input(const std::string& message) {
   fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
   return kExitBadInput;
 }
@@ -266,34 +102,34 @@ int bad_input(const std::string& message) {
 int analyze_spectra(const SpectraOptions& options) {
   // 1. Everything that can be wrong with the input is found before anything is written.
   if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
-    return bad_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
+    return bad_spectra_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
   }
   if (!(options.false_alarm > 0.0 && options.false_alarm < 1.0)) {
-    return bad_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", options.false_alarm));
+    return bad_spectra_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", options.false_alarm));
   }
   if (options.method != "fast" && options.method != "exact") {
-    return bad_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
+    return bad_spectra_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
   }
   SnapshotRead first;
   try {
     first = read_snapshot(options.snapshots, 0);
   } catch (const std::exception& error) {
-    return bad_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
+    return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
   }
   std::string error;
   const std::vector<std::int64_t> frames = parse_frames(options.frames, first.frames, error);
-  if (!error.empty()) return bad_input(error);
+  if (!error.empty()) return bad_spectra_input(error);
   const SnapshotMetadata& metadata = first.metadata;
   const int dimension = metadata.system.dimension;
   const double length_z = metadata.system.length_z;
   const int max_mode = options.max_mode.value_or(dimension == 3 ? kDefaultMaxMode3d : kDefaultMaxMode);
   const int max_mode_limit = dimension == 3 ? kMaxModeLimit3d : kMaxModeLimit;
   if (max_mode < 1 || max_mode > max_mode_limit) {
-    return bad_input(fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit, dimension, max_mode));
+    return bad_spectra_input(fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit, dimension, max_mode));
   }
   const ShearFrame box{metadata.system.length_x, metadata.system.length_y, metadata.system.shear_velocity};
   if (options.subtract_shear && !box.sheared()) {
-    return bad_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
+    return bad_spectra_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
   TransformOptions transform;
   transform.max_mode = max_mode;
@@ -308,9 +144,9 @@ int analyze_spectra(const SpectraOptions& options) {
   // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
   try {
     std::unique_ptr<SpectraFile> file;
-    std::string csv = "frame,t,c,shear_offset,field,l,m,n";
-    for (const auto& [column, member] : kDominantColumns) csv += fmt::format(",{}", column);
-    csv += ",length_over_L0,significant\n";
+    const SpectraFileSettings settings{options.snapshots, options.method, options.subtract_shear, options.exclude_ky_axis,
+                                       options.false_alarm};
+    std::string csv = dominant_csv_header();
     std::vector<SignificanceTally> tallies(fields_of(dimension).size());
     fmt::print("{}\n", describe_comparison(metadata.system, l0, options.false_alarm));
     for (const std::int64_t index : frames) {
@@ -319,15 +155,12 @@ int analyze_spectra(const SpectraOptions& options) {
       const ReciprocalLattice lattice = lattice_for_frame(box, frame.shear_offset, dimension, length_z);
       const PowerMaps maps = power_maps(transform_fields(frame.particles, box, lattice, transform), options.exclude_ky_axis);
       const AnnulusSpectrum annulus = annulus_sums(maps, dk, radius);
-      if (!file) file = std::make_unique<SpectraFile>(options.out, options, metadata, transform, dk, annulus);
+      if (!file) file = std::make_unique<SpectraFile>(options.out, settings, metadata, transform, dk, annulus);
       std::vector<DominantMode> dominant;
       for (const FieldChoice& field : fields_of(dimension)) {
         const DominantMode& d =
             dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.noise(maps), options.false_alarm));
-        csv += fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{},{}", index, frame.clock.time, frame.collisions_per_particle,
-                           frame.shear_offset, field.name, d.l, d.m, d.n);
-        for (const auto& [column, member] : kDominantColumns) csv += fmt::format(",{:.17g}", d.*member);
-        csv += fmt::format(",{:.17g},{}\n", d.length / l0, d.significant ? 1 : 0);
+        csv += dominant_csv_row(index, frame, field.name, d, l0);
       }
       file->append(index, frame, maps, annulus, dominant, l0);
       fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.clock.time, frame.collisions_per_particle);

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <new>
 #include <system_error>
 
@@ -74,3 +75,5 @@ int granule::app::run_granule(int argc, char** argv) {
   }
   return code;
 }
+
+std::string granule::app::own_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }

@@ -76,16 +76,6 @@ void require_hdf5_format(const std::string& path, const char* format, const char
   if (hdf5_format(path) != format) throw BadPlotInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
 }
 
-std::vector<double> read_frame_series(const std::string& path, const char* name) {
-  h5::Handle file = h5::open_file(path);
-  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
-  h5::check(exists, file.get(), "look for", name);
-  std::vector<double> values(exists > 0 ? static_cast<std::size_t>(h5::complete_frames(file.get())) : 0);
-  for (std::size_t k = 0; k < values.size(); ++k) h5::read_frame(file.get(), name, H5T_NATIVE_DOUBLE, &values[k], k);
-  file.close();
-  return values;
-}
-
 int run_program(const std::vector<std::string>& argv) {
   std::vector<char*> pointers;
   for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));

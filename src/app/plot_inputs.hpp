@@ -37,10 +37,6 @@ int hdf5_dimension(const std::string& path);
 // Throws BadPlotInput unless `path` is an HDF5 file whose root attribute `format` is `format`.
 void require_hdf5_format(const std::string& path, const char* format, const char* producer);
 
-// The one-dimensional per-frame dataset `name` of an HDF5 file of frames (e.g. `shear_velocity` of
-// snapshots.h5) over its complete frames; empty when the file has no such dataset.
-std::vector<double> read_frame_series(const std::string& path, const char* name);
-
 // The options given on a parsed command line ("--width", ...): options that apply to one
 // dimension only are refused for the other.
 std::vector<std::string> given_options(const CLI::App& command);

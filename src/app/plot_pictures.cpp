@@ -12,6 +12,7 @@
 #include "app/plot_inputs.hpp"
 #include "app/plot_run_picture.hpp"
 #include "io/atomic_file.hpp"
+#include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
 
 namespace granule::app {
@@ -174,7 +175,7 @@ int plot_movie(const MovieArguments& m) {
   if (error || !std::filesystem::create_directories(scratch, error)) {
     throw io_error(fmt::format("cannot create {}", scratch.string()), error.value());
   }
-  const std::vector<double> shear_velocity = read_frame_series(snapshots, "shear_velocity");
+  const std::vector<double> shear_velocity = h5::read_frame_series(snapshots, "shear_velocity");
   std::int64_t drawn = 0;
   for (std::int64_t k = 0; k < frames; k += m.stride, ++drawn) {
     const SnapshotRead snapshot = read_snapshot(snapshots, k);

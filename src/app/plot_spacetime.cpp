@@ -1,7 +1,8 @@
 // `granule plot spacetime`: ρ(y, t), V_x(y, t), T(y, t) as three shaded panels, time across and y
 // up (thesis Figs 4.7–4.8: dense streamwise layers converging into a central plug), with U(t)
-// above when the snapshots store it.  The arrays are assembled here (plot_spacetime_profiles),
-// written as HDF5 beside the picture, and drawn by python/granule_plots/spacetime.py.
+// above when the snapshots store it.  The arrays are assembled by io/spacetime_file (the rows by
+// analysis/spacetime_profiles), written as HDF5 beside the picture, and drawn by
+// python/granule_plots/spacetime.py.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -11,7 +12,7 @@
 #include "analysis/field_grid.hpp"
 #include "app/plot_command.hpp"
 #include "app/plot_inputs.hpp"
-#include "app/plot_spacetime_profiles.hpp"
+#include "io/spacetime_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_file.hpp"
 

@@ -15,6 +15,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
 #include "app/plot_inputs.hpp"
@@ -86,7 +87,6 @@ std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, S
   return groups;
 }
 
-std::string own_executable() { return fs::read_symlink("/proc/self/exe").string(); }
 
 // Runs all points of one group: K at a time locally, or over the MPI ranks.
 using GroupRunner = std::function<void(const sweep::SweepRun&)>;

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <optional>
 
+#include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
 #include "sweep/point_runs.hpp"
@@ -76,7 +77,6 @@ std::optional<ArrayShare> array_share(const SweepOptions& o) {
   return share;
 }
 
-std::string own_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
 
 int exit_code(const SweepTally& tally) {
   if (const int signal = InterruptSignals::received(); signal != 0) return kExitInterruptedBase + signal;

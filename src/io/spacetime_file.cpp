@@ -1,28 +1,16 @@
-#include "app/plot_spacetime_profiles.hpp"
+#include "io/spacetime_file.hpp"
 
 #include <hdf5.h>
 
 #include "analysis/cell_fields.hpp"
-#include "app/plot_inputs.hpp"
 #include "granule/version.hpp"
 #include "io/fields_file.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/snapshot_file.hpp"
 
-namespace granule::app {
-
-namespace {
+namespace granule {
 
 using h5::Handle;
-
-void append_row(SpacetimeProfiles& out, const StreamwiseProfiles& row) {
-  out.density.insert(out.density.end(), row.density.begin(), row.density.end());
-  out.velocity_x.insert(out.velocity_x.end(), row.velocity_x.begin(), row.velocity_x.end());
-  out.temperature.insert(out.temperature.end(), row.temperature.begin(), row.temperature.end());
-  out.y = row.y;
-}
-
-}  // namespace
 
 SpacetimeProfiles spacetime_from_fields(const std::string& fields_path, const std::string& group) {
   Handle opened = h5::open_file(fields_path);
@@ -39,8 +27,8 @@ SpacetimeProfiles spacetime_from_fields(const std::string& fields_path, const st
   out.nominal_shear_velocity = h5::read_attribute<double>(file, "shear_velocity", H5T_NATIVE_DOUBLE);
   out.boundary = h5::read_string_attribute(file, "boundary");
   out.relative = h5::read_attribute<int>(file, "subtract_shear_profile", H5T_NATIVE_INT) != 0;
-  out.t = read_frame_series(fields_path, "frames/t");
-  out.c = read_frame_series(fields_path, "frames/c");
+  out.t = h5::read_frame_series(fields_path, "frames/t");
+  out.c = h5::read_frame_series(fields_path, "frames/c");
   const std::size_t frames = out.t.size();
   // Only the fields a streamwise profile uses are read; the others stay empty.
   const std::pair<const char*, std::vector<double>*> used[] = {
@@ -51,7 +39,7 @@ SpacetimeProfiles spacetime_from_fields(const std::string& fields_path, const st
     for (auto& [name, values] : used) {
       h5::read_frame(file, (group + "/" + name).c_str(), H5T_NATIVE_DOUBLE, values->data(), k);
     }
-    append_row(out, streamwise_profiles(maps));
+    append_profiles(out, streamwise_profiles(maps));
   }
   opened.close();
   return out;
@@ -71,18 +59,13 @@ SpacetimeProfiles spacetime_from_snapshots(const std::string& snapshots_path, in
   out.restitution = m.system.restitution;
   out.nominal_shear_velocity = m.system.shear_velocity;
   out.boundary = m.boundary;
-  // One cell per row, the full width (and depth, in 3D) of the box: the cell fields of §1.4.3 are
-  // then the rows' own.
-  const FieldGrid grid{1, rows, m.system.length_x, m.system.length_y, 1, m.system.length_z, m.system.dimension};
   for (std::int64_t k = 0; k < first.frames; ++k) {
     const SnapshotRead s = k == 0 ? first : read_snapshot(snapshots_path, k);  // frame 0 is read once
     const double shear_velocity = m.boundary != "lees-edwards" ? 0.0
                                   : out.shear_velocity.empty() ? m.system.shear_velocity
                                                                : out.shear_velocity[static_cast<std::size_t>(k)];
     const ShearFrame frame{m.system.length_x, m.system.length_y, shear_velocity};
-    CellMoments moments(grid);
-    moments.add(s.frame.particles, frame, relative);
-    append_row(out, streamwise_profiles(fields_from_moments(moments, frame, s.frame.shear_offset, relative)));
+    append_profiles(out, row_profiles(s.frame.particles, m.system, rows, frame, s.frame.shear_offset, relative));
     out.t.push_back(s.frame.clock.time);
     out.c.push_back(s.frame.collisions_per_particle);
   }
@@ -90,10 +73,10 @@ SpacetimeProfiles spacetime_from_snapshots(const std::string& snapshots_path, in
 }
 
 void read_shear_protocol(const std::string& snapshots_path, SpacetimeProfiles& profiles) {
-  profiles.shear_velocity = read_frame_series(snapshots_path, "shear_velocity");
+  profiles.shear_velocity = h5::read_frame_series(snapshots_path, "shear_velocity");
   if (profiles.shear_velocity.empty()) return;
-  profiles.protocol_t = read_frame_series(snapshots_path, "time");
-  profiles.shear_offset = read_frame_series(snapshots_path, "shear_offset");
+  profiles.protocol_t = h5::read_frame_series(snapshots_path, "time");
+  profiles.shear_offset = h5::read_frame_series(snapshots_path, "shear_offset");
 }
 
 void write_spacetime_partial(const std::string& path, const SpacetimeProfiles& p) {
@@ -125,4 +108,4 @@ void write_spacetime_partial(const std::string& path, const SpacetimeProfiles& p
   file.close();
 }
 
-}  // namespace granule::app
+}  // namespace granule

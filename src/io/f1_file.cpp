@@ -1,6 +1,5 @@
-// Output files of `granule analyze f1` (schema in docs/f1.md): one HDF5 file with a group per
-// window, and CSV tables beside it: the Appendix B table, a per-window summary (Figs 5.5–5.9),
-// and the curves behind Figs 5.1–5.4, 5.10 and 5.11.
+#include "io/f1_file.hpp"
+
 #include <fmt/format.h>
 #include <hdf5.h>
 
@@ -8,12 +7,11 @@
 #include <filesystem>
 #include <limits>
 
-#include "app/analyze_f1.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_util.hpp"
 
-namespace granule::app {
+namespace granule {
 
 namespace {
 
@@ -236,7 +234,7 @@ std::string csv_number(double value) { return std::isnan(value) ? std::string() 
 }  // namespace
 
 std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDescription& run,
-                                          const std::vector<WindowResult>& windows) {
+                                          const std::vector<WindowResult>& windows, const std::string& thesis_comparison) {
   std::vector<Curves> curves;
   for (const WindowResult& r : windows) curves.push_back(curves_of(r, run));
   const double e = run.metadata.system.restitution;
@@ -308,14 +306,13 @@ std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDes
     written.push_back(stem + suffix);
     write_file_atomically(written.back(), *content);
   }
-  const std::string thesis = thesis_comparison_csv(run.metadata.system, windows);
-  if (!thesis.empty()) {
+  if (!thesis_comparison.empty()) {
     written.push_back(stem + "_thesis.csv");
-    write_file_atomically(written.back(), thesis);
+    write_file_atomically(written.back(), thesis_comparison);
   }
   write_hdf5(out, run, windows, curves);
   written.push_back(out);
   return written;
 }
 
-}  // namespace granule::app
+}  // namespace granule
