@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "analysis/free_paths.hpp"
+#include "observers/free_paths.hpp"
 #include "analysis/histogram.hpp"
 
 namespace granule {

@@ -8,18 +8,19 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <new>
 #include <system_error>
 
-#include "app/analyze_command.hpp"
+#include "app/analyze/analyze_command.hpp"
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
-#include "app/bench_command.hpp"
-#include "app/plot_command.hpp"
-#include "app/reproduce_command.hpp"
-#include "app/run_command.hpp"
-#include "app/sweep_command.hpp"
-#include "app/theory_command.hpp"
+#include "app/bench/bench_command.hpp"
+#include "app/plot/plot_command.hpp"
+#include "app/reproduce/reproduce_command.hpp"
+#include "app/run/run_command.hpp"
+#include "app/sweep/sweep_command.hpp"
+#include "app/theory/theory_command.hpp"
 #include "granule/version.hpp"
 #include "io/io_error.hpp"
 
@@ -74,3 +75,5 @@ int granule::app::run_granule(int argc, char** argv) {
   }
   return code;
 }
+
+std::string granule::app::own_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }

@@ -8,9 +8,9 @@
 
 #include "bindings/bindings.hpp"
 #include "bindings/interactive_run.hpp"
-#include "bindings/new_run_state.hpp"
 #include "bindings/toml_from_dict.hpp"
 #include "driver/run_session.hpp"
+#include "driver/run_start.hpp"
 #include "io/atomic_file.hpp"
 
 namespace granule::bindings {
@@ -44,9 +44,10 @@ class SigintToFlag {
 
 template <int D>
 nlohmann::json run_session(const RunConfig& config, const std::string& out) {
-  const NewRunState start = new_run_state(config);
+  const CellGrid grid = driver::run_cell_grid(config);
+  const driver::RunStart start = driver::run_start(config);
   write_file_atomically(out + "/config.toml", to_toml(config));
-  driver::RunSession<D> session(config, start.grid, out, start.particles, start.clock);
+  driver::RunSession<D> session(config, grid, out, start);
   const SigintToFlag signals;
   return session.finish(session.run(&interrupt_flag));
 }

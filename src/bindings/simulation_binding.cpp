@@ -147,9 +147,10 @@ configuration, stepped from Python.
 ``config`` is the path of a TOML file or a dict with the same keys (``{"system": {"particles":
 1000}, "seed": 3}``); ``overrides`` are ``--set`` strings ("system.restitution=0.8").  A bad
 configuration raises granule.ConfigError with the command line's message (key, value, allowed
-range).  ``initial.from`` is refused (it needs a run directory: use ``granule run``).
+range).
 
-Construction makes the initial state of thesis §1.4.2 and runs the elastic pre-run
+Construction makes the initial state as ``granule run`` does (a frame of an earlier run with
+``initial.from``, else the state of thesis §1.4.2) and runs the elastic pre-run
 (``initial.equilibrate``); production starts at t = 0, c = 0.  The trajectory equals that of
 ``granule run`` for the same configuration and seed, bit for bit: the engine's does not depend on
 where it is stopped.

@@ -15,26 +15,23 @@
 #include <vector>
 
 #include "driver/progress.hpp"
-#include "driver/run_measurements.hpp"
+#include "driver/run_lifecycle.hpp"
 #include "driver/run_summary.hpp"
 #include "driver/schedule.hpp"
 #include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"
 #include "io/snapshot_file.hpp"
-#include "observers/global_diagnostics.hpp"
 
 namespace granule::driver {
 
-// The session is itself the stop client of its time series and snapshots; the measurements are
-// another (driver/stop_loop.hpp).
+// The session is the stop client of its snapshots; the time series and the measurements are the
+// lifecycle's (driver/run_lifecycle.hpp).
 template <int D>
 class RunSession final : public StopClient<D> {
  public:
-  // A new run into the existing, empty directory `out` from the initial state of §1.4.2, the
-  // images held at `clock.held_shear_velocity` until production starts.
-  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const ParticleState& initial,
-             const ClockState& clock);
+  // A new run into the existing, empty directory `out` from `start` (driver/run_start.hpp).
+  RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const RunStart& start);
   // A run continued from its checkpoint in `out`.
   RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint);
   // A run continued from snapshot frame K in `out` (whose later frames and rows were set aside):
@@ -43,8 +40,7 @@ class RunSession final : public StopClient<D> {
     SnapshotFrame frame;
     std::int64_t snapshot_frames = 0;  // frames 0..K kept in snapshots.h5
     std::vector<DiagnosticsSample> samples;  // rows up to the frame
-    std::int64_t fields_frames = 0;    // fields frames up to the frame
-    bool fields_frame_at_start = false;  // the last of them is at the frame itself
+    FrameContinuation kept;            // what the measurements' files keep
   };
   RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const FrameStart& start);
 
@@ -53,44 +49,36 @@ class RunSession final : public StopClient<D> {
   // The checkpoint, the end-of-run outputs and summary.json.  Returns the summary.
   nlohmann::json finish(StopReason reason);
 
-  const Simulation<D>& simulation() const { return *sim_; }
-  const std::vector<DiagnosticsSample>& samples() const { return samples_; }
+  const Simulation<D>& simulation() const { return run_.engine(); }
+  const std::vector<DiagnosticsSample>& samples() const { return run_.samples(); }
   std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
-  bool measurements_enabled() const { return measurements_ != nullptr; }
 
-  std::int64_t next_collisions() const override {
-    return std::min(sampling_.next_collisions, snapshotting_.next_collisions);
-  }
-  double next_time() const override { return std::min(sampling_.next_time, snapshotting_.next_time); }
-  // Samples and snapshots due at the present stop.
+  std::int64_t next_collisions() const override { return snapshotting_.next_collisions; }
+  double next_time() const override { return snapshotting_.next_time; }
+  // A snapshot, if due at the present stop.
   void on_stop(Simulation<D>& sim) override;
 
  private:
-  bool in_production() const { return diagnostics_ != nullptr; }
-  void start_production();
+  bool in_production() const { return run_.in_production(); }
+  void start_snapshots();
   void append_snapshot();
-  void take_sample();
   void write_timeseries() const;
   void write_checkpoint();
   void save(StateArchive& archive) const;
-  void restore_production(const StateArchive& archive);
   void report_progress();
 
   RunConfig config_;
   CellGrid grid_;
   std::string out_;
-  std::unique_ptr<Simulation<D>> sim_;
-  std::int64_t equilibrate_collisions_ = 0;
+  RunLifecycle<D> run_;
+  Simulation<D>& sim_;
   std::int64_t until_collisions_ = kNoLimit;
   double until_time_ = kInf;
 
   // Production (after the pre-run).
-  std::unique_ptr<GlobalDiagnostics<D>> diagnostics_;
-  std::vector<DiagnosticsSample> samples_;
-  Schedule sampling_, snapshotting_;
+  Schedule snapshotting_;
   std::unique_ptr<SnapshotWriter> snapshots_;
   std::int64_t last_snapshot_events_ = -1;
-  std::unique_ptr<RunMeasurements<D>> measurements_;
 
   Progress progress_;
   double earlier_wall_seconds_ = 0.0;  // of the segments before a resume

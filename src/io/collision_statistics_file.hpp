@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "analysis/free_paths.hpp"
-#include "analysis/impact_parameters.hpp"
+#include "observers/free_paths.hpp"
+#include "observers/impact_parameters.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {

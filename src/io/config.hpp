@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analysis/density_windows.hpp"
-#include "analysis/free_paths.hpp"
+#include "observers/free_paths.hpp"
 #include "cells/cell_grid.hpp"
 #include "engine/system_params.hpp"
 #include "init/initial_state.hpp"

@@ -144,10 +144,14 @@ std::string speeds_to_toml(const RunConfig& c) {
                        o->amplitude, o->period, o->start, o->cycles);
   }
   if (c.lees_edwards) out += fmt::format("shear_tolerance = {:.17g}\n", h.tolerance);
-  out += fmt::format("\n[initial]\ntemperature = {:.17g}\nshear_profile = {}\n", c.initial_temperature, c.initial_shear_profile);
+  out += "\n[initial]\n";
+  // A state taken from another run has neither a temperature nor a profile of its own (the parser
+  // refuses them beside initial.from, and a resumed run reads this file back).
   if (const auto& from = c.initial_from) {
     out += fmt::format("from = \"{}\"\n", from->directory);
     if (from->frame) out += fmt::format("frame = {}\n", *from->frame);
+  } else {
+    out += fmt::format("temperature = {:.17g}\nshear_profile = {}\n", c.initial_temperature, c.initial_shear_profile);
   }
   return out;
 }

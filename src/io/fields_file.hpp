@@ -11,7 +11,7 @@
 #include <string>
 
 #include "analysis/cell_fields.hpp"
-#include "analysis/collisional_stress.hpp"
+#include "observers/collisional_stress.hpp"
 #include "io/hdf5_util.hpp"
 
 namespace granule {

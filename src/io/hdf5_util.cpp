@@ -285,4 +285,14 @@ hid_t create_group(hid_t location, const char* name) {
   return group.release();
 }
 
+std::vector<double> read_frame_series(const std::string& path, const char* name) {
+  Handle file = open_file(path);
+  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
+  check(exists, file.get(), "look for", name);
+  std::vector<double> values(exists > 0 ? static_cast<std::size_t>(complete_frames(file.get())) : 0);
+  for (std::size_t k = 0; k < values.size(); ++k) read_frame(file.get(), name, H5T_NATIVE_DOUBLE, &values[k], k);
+  file.close();
+  return values;
+}
+
 }  // namespace granule::h5

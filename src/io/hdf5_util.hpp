@@ -95,6 +95,9 @@ void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t fr
 std::int64_t complete_frames(hid_t file);
 // The same for the file at `path` (a `.partial` or a published file).  Throws IoError.
 std::int64_t complete_frames(const std::string& path);
+// The one-dimensional per-frame dataset `name` of a file of frames (e.g. `shear_velocity` of
+// snapshots.h5) over its complete frames; empty when the file has no such dataset.
+std::vector<double> read_frame_series(const std::string& path, const char* name);
 
 // A file of frames written as `<path>.partial` (snapshots, fields): each frame is flushed when
 // complete, and publish() gives the file its final name.  Destroyed unpublished, it leaves

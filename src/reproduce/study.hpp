@@ -1,7 +1,7 @@
 // A study: one part of the thesis (or the independent validation) as `granule reproduce` runs it
 // (docs/reproduce.md).  It declares the runs it needs at each scale as sweep specs (README.md,
 // "Sweeps"), and turns their outputs into claims (claim.hpp) and figures.  Studies are plain
-// data plus two functions; the command (src/app/reproduce_command.cpp) runs, draws and reports.
+// data plus two functions; the command (src/app/reproduce/reproduce_command.cpp) runs, draws and reports.
 #pragma once
 
 #include <functional>

@@ -8,9 +8,9 @@
 #include <tuple>
 
 #include "analysis/collision_statistics_fits.hpp"
-#include "analysis/collisional_stress.hpp"
-#include "analysis/free_paths.hpp"
-#include "analysis/impact_parameters.hpp"
+#include "observers/collisional_stress.hpp"
+#include "observers/free_paths.hpp"
+#include "observers/impact_parameters.hpp"
 #include "init/random.hpp"
 
 namespace granule {

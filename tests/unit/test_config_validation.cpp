@@ -247,6 +247,7 @@ TEST(ConfigValidation, ExtremeValidConfigurationsRoundTrip) {
        "output.snapshot_every_collisions_per_particle=0.5", "collisions.max_length=1e42"},
       {"system.particles=2147483647", "engine.particles_per_cell=8", "run.until_time=1e-300",
        "initial.equilibrate=2147483647e-9", "collisions.density_windows=[[0, 1e300]]"},
+      {"initial.from=\"runs/a\"", "initial.frame=3", "boundary.kind=\"lees-edwards\"", "boundary.shear_velocity=2"},
   };
   for (const auto& overrides : cases) {
     const ConfigResult first = parse(overrides);

@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "analysis/collision_statistics_fits.hpp"
-#include "analysis/free_paths.hpp"
+#include "observers/free_paths.hpp"
 #include "init/random.hpp"
 #include "unit/chi_square.hpp"
 

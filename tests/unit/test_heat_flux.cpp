@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "analysis/cell_fields.hpp"
-#include "analysis/collisional_stress.hpp"
+#include "observers/collisional_stress.hpp"
 #include "init/random.hpp"
 #include "physics/collision_rule.hpp"
 #include "unit/particle_rows.hpp"

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "analysis/cell_fields.hpp"
-#include "analysis/collisional_stress.hpp"
+#include "observers/collisional_stress.hpp"
 #include "io/fields_file.hpp"
 #include "io/hdf5_util.hpp"
 #include "unit/particle_rows.hpp"

@@ -11,9 +11,9 @@
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/collision_statistics_fits.hpp"
-#include "analysis/collisional_stress.hpp"
-#include "analysis/free_paths.hpp"
-#include "analysis/impact_parameters.hpp"
+#include "observers/collisional_stress.hpp"
+#include "observers/free_paths.hpp"
+#include "observers/impact_parameters.hpp"
 #include "observers/global_diagnostics.hpp"
 #include "validation/simulation_setup.hpp"
 

@@ -1,4 +1,4 @@
-// The collisional heat flux q^(c) (analysis/collisional_stress.hpp, docs/macrostructure.md) on
+// The collisional heat flux q^(c) (observers/collisional_stress.hpp, docs/macrostructure.md) on
 // real trajectories:
 //  • exact budget: summed over the cells, the per-cell energy transfer equals the global sum over
 //    the collision records, written here independently with the image velocity U (the observer
@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "analysis/collisional_stress.hpp"
+#include "observers/collisional_stress.hpp"
 #include "validation/simulation_setup.hpp"
 
 namespace granule {

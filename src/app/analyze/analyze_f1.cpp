@@ -1,0 +1,228 @@
+// `granule analyze f1 SNAPSHOTS.h5 --density-window C±W --temperature-window C±W`: the
+// single-particle velocity distribution of thesis Chapter 5 in each (ρ, T) window, by the
+// cumulative sampling algorithm of §5.2, as the Appendix B table.  Docs: docs/f1.md.
+#include "app/analyze/analyze_f1.hpp"
+
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <memory>
+#include <new>
+#include <optional>
+
+#include "app/analyze/analyze_command.hpp"
+#include "app/exit_codes.hpp"
+#include "distribution/window_sampling.hpp"
+#include "io/io_error.hpp"
+
+namespace granule::app {
+
+namespace {
+
+using namespace granule::distribution;
+
+constexpr int kExitNoWindow = 1;
+
+struct F1CommandOptions {
+  std::string snapshots;
+  std::vector<std::string> density_windows, temperature_windows;
+  std::string cells;
+  std::int64_t from_frame = 0;
+  bool subtract_shear_profile = false;
+  bool thesis_windows = false;
+  std::optional<double> profile_speed;
+  double profile_angle = M_PI;
+  std::string out = "f1.h5";
+  F1Options f1;
+};
+
+int bad_input(const std::string& message) {
+  fmt::print(stderr, "granule analyze f1: error: {}\n", message);
+  return kExitBadInput;
+}
+
+// "C±W", "C+-W" or "C+/-W" with W > 0.
+std::optional<ValueWindow> parse_window(std::string text) {
+  for (const std::string separator : {"±", "+/-", "+-"}) {
+    const std::size_t at = text.find(separator);
+    if (at == std::string::npos) continue;
+    try {
+      std::size_t used_center = 0, used_width = 0;
+      const std::string center = text.substr(0, at), width = text.substr(at + separator.size());
+      ValueWindow w{std::stod(center, &used_center), std::stod(width, &used_width)};
+      if (used_center != center.size() || used_width != width.size() || !std::isfinite(w.center) ||
+          !(w.half_width > 0.0) || !std::isfinite(w.half_width))
+        return std::nullopt;
+      return w;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string fits_summary(const WindowResult& r) {
+  const auto word = [](const FitReport& f) { return f.converged ? "converged" : "NOT converged (" + f.status + ")"; };
+  return fmt::format("phi* {}, psi* {}, series {}; h* within thesis tolerance: {}", word(r.estimate.once.speed.report),
+                     word(r.estimate.once.angular.report), word(r.estimate.series.report),
+                     r.quality.within_tolerance() ? "yes" : "no");
+}
+
+int analyze_f1(const F1CommandOptions& o) {
+  // 1. Every input error is found before anything is read at length or written.
+  std::vector<ValueWindow> densities, temperatures;
+  for (const auto& [texts, parsed, name] : {std::tuple{&o.density_windows, &densities, "--density-window"},
+                                            std::tuple{&o.temperature_windows, &temperatures, "--temperature-window"}}) {
+    for (const std::string& text : *texts) {
+      const auto w = parse_window(text);
+      if (!w) return bad_input(fmt::format("{} '{}' must be CENTER±HALFWIDTH (or CENTER+-HALFWIDTH) with HALFWIDTH > 0", name, text));
+      parsed->push_back(*w);
+    }
+  }
+  const F1Options& f = o.f1;
+  if (f.speed_bins < 8 || f.speed_bins > 4096) return bad_input(fmt::format("--speed-bins must be in [8, 4096] (got {})", f.speed_bins));
+  if (f.angle_bins < 16 || f.angle_bins > 4096 || f.angle_bins % 8 != 0)
+    return bad_input(fmt::format("--angle-bins must be a multiple of 8 in [16, 4096] (got {})", f.angle_bins));
+  if (!(f.fit_quantile >= 0.5 && f.fit_quantile <= 1.0)) return bad_input(fmt::format("--fit-quantile must be in [0.5, 1] (got {})", f.fit_quantile));
+  if (f.bootstrap < 0 || f.bootstrap == 1 || f.bootstrap > 10000)
+    return bad_input(fmt::format("--bootstrap must be 0 or in [2, 10000] (got {})", f.bootstrap));
+  if (!(f.speed_max >= 0.0) || !std::isfinite(f.speed_max)) return bad_input(fmt::format("--speed-max must be ≥ 0 (got {})", f.speed_max));
+  if (o.profile_speed && !(*o.profile_speed > 0.0)) return bad_input(fmt::format("--profile-speed must be > 0 (got {})", *o.profile_speed));
+  SnapshotRead first;
+  try {
+    first = read_snapshot(o.snapshots, 0);
+  } catch (const std::exception& error) {
+    return bad_input(fmt::format("cannot read snapshots '{}': {}", o.snapshots, error.what()));
+  }
+  const SystemParams& system = first.metadata.system;
+  if (o.thesis_windows) {
+    // Appendix B's 4 ρ × 4 T windows of the run's ẽ, in the run's units (docs/f1.md, "Units").
+    const std::vector<AppendixBEntry> mapped = thesis_windows_in_run_units(system);
+    if (mapped.empty()) {
+      return bad_input(fmt::format("--thesis-windows needs a Lees–Edwards run with restitution 0.6, 0.7, 0.8 or 0.9 "
+                                   "(Appendix B's); this one has ẽ = {:g}, U = {:g}", system.restitution,
+                                   system.shear_velocity));
+    }
+    const auto add_unique = [](std::vector<ValueWindow>& list, ValueWindow w) {
+      for (const ValueWindow& known : list) {
+        if (known.center == w.center) return;
+      }
+      list.push_back(w);
+    };
+    for (const AppendixBEntry& e : mapped) {
+      add_unique(densities, {e.density, e.density_half_width});
+      add_unique(temperatures, {e.temperature, e.temperature_half_width});
+    }
+    const ThesisUnitMap map = appendix_b_unit_map(system);
+    fmt::print("Appendix B windows in this run's units: lengths × {:.4g}, velocities × {:.4g} of the thesis's "
+               "(N = 2e5, L = 1, U = 100, sigma = {:.4g}); this box is {:.4g} sigma wide, the thesis's {:.4g}\n",
+               map.length, map.velocity, AppendixBSystem::diameter(), system.length_x / system.diameter,
+               AppendixBSystem::box / AppendixBSystem::diameter());
+  }
+  if (densities.empty() || temperatures.empty()) {
+    return bad_input("give --density-window and --temperature-window (each at least once), or --thesis-windows");
+  }
+  // Cumulative sampling of Chapter 5 is written for the velocity plane of disks.
+  if (system.dimension != 2) {
+    return bad_input(fmt::format("'{}' is a {}D run: the velocity distribution f1 is measured in 2D runs only", o.snapshots,
+                                 system.dimension));
+  }
+  if (o.from_frame < 0 || o.from_frame >= first.frames)
+    return bad_input(fmt::format("--from-frame must be in [0, {}) for this file (got {})", first.frames, o.from_frame));
+  SamplingOptions sampling;
+  sampling.grid = default_field_grid(system.length_x, system.length_y, system.particles);
+  if (!o.cells.empty()) {
+    int nx = 0, ny = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(o.cells.c_str(), "%d %c %d %c", &nx, &comma, &ny, &extra) != 3 || comma != ',' || nx < 1 || ny < 1 ||
+        nx > 4096 || ny > 4096)
+      return bad_input(fmt::format("--cells must be NX,NY with each in [1, 4096] (got '{}')", o.cells));
+    sampling.grid.nx = nx;
+    sampling.grid.ny = ny;
+  }
+  const ShearFrame frame{system.length_x, system.length_y, system.shear_velocity};
+  if (o.subtract_shear_profile && !frame.sheared())
+    return bad_input("--subtract-shear-profile needs a Lees–Edwards run (this one has U = 0)");
+  sampling.subtract_shear_profile = o.subtract_shear_profile;
+
+  // 2. Sample every window in every frame from --from-frame on, then analyse each window.
+  std::vector<WindowSamples> windows;
+  for (const ValueWindow& rho : densities)
+    for (const ValueWindow& t : temperatures) windows.push_back(WindowSamples{rho, t, {}, {}, {}, {}, {}});
+  F1RunDescription run{o.snapshots, first.metadata, sampling.grid.nx, sampling.grid.ny, o.from_frame,
+                       first.frames - o.from_frame, o.subtract_shear_profile, o.profile_angle,
+                       o.profile_speed.value_or(0.0), f};
+  std::vector<WindowResult> results;
+  try {
+    for (std::int64_t index = o.from_frame; index < first.frames; ++index) {
+      const SnapshotRead snapshot = index == 0 ? first : read_snapshot(o.snapshots, index);
+      sample_configuration(snapshot.frame.particles, frame, sampling, windows);
+    }
+    fmt::print("sampled {} frames ({} to {}) on {} x {} cells\n", run.frames_used, o.from_frame, first.frames - 1,
+               sampling.grid.nx, sampling.grid.ny);
+    for (const WindowSamples& w : windows) {
+      WindowResult r = analyse_window(w, f);
+      if (!r.analysed) {
+        fmt::print(stderr, "granule analyze f1: warning: {}\n", r.warning);
+        continue;
+      }
+      const SineSeries& b = r.estimate.series;
+      fmt::print("rho {:g}±{:g}, T {:g}±{:g}: {} samples, T = {:.4g}; b0 = ({:.4g}, {:.4g}, {:.4g}); "
+                 "Tr tau direct/once/twice = {:.4g}/{:.4g}/{:.4g}; {}\n",
+                 w.density.center, w.density.half_width, w.temperature.center, w.temperature.half_width, r.samples,
+                 r.temperature, b.mean[0], b.mean[1], b.mean[2], r.estimate.direct.trace(),
+                 r.estimate.once_integrals.moment.trace(), r.estimate.twice_integrals.moment.trace(),
+                 fits_summary(r));
+      if (const auto match = nearest_thesis_window(system, r)) fmt::print("{}\n", describe_thesis_comparison(*match, r));
+      results.push_back(std::move(r));
+    }
+    if (results.empty()) {
+      fmt::print(stderr, "granule analyze f1: error: no window had enough samples; nothing written\n");
+      return kExitNoWindow;
+    }
+    for (const std::string& path : write_f1_outputs(o.out, run, results, thesis_comparison_csv(system, results))) fmt::print("wrote {}\n", path);
+  } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
+    throw;
+  } catch (const std::bad_alloc&) {  // exit 5, by main
+    throw;
+  } catch (const std::exception& failure) {
+    fmt::print(stderr, "granule analyze f1: error: {}\n", failure.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_analyze_f1(CLI::App& analyze) {
+  auto o = std::make_shared<F1CommandOptions>();
+  CLI::App* command = analyze.add_subcommand(
+      "f1", "Single-particle velocity distribution by cumulative sampling (thesis §5.2): the Appendix B table of "
+            "b^(i)(theta) in each density x temperature window. Docs: docs/f1.md");
+  command->add_option("snapshots", o->snapshots, "snapshots.h5 of a (steady) run")->required();
+  command->add_option("--density-window", o->density_windows,
+                      "rho window C±W in particles per unit area (repeatable; every rho x T pair is analysed)");
+  command->add_option("--temperature-window", o->temperature_windows, "T window C±W, T = ½<v'²> (repeatable)");
+  command->add_flag("--thesis-windows", o->thesis_windows,
+                    "Add Appendix B's 4 x 4 windows of the run's restitution, mapped to the run's units (docs/f1.md)");
+  command->add_option("--cells", o->cells, "Coarse-graining cells NX,NY (default: ~20 particles per cell)");
+  command->add_option("--from-frame", o->from_frame, "First frame used (the steady state)")->default_val(0);
+  command->add_flag("--subtract-shear-profile", o->subtract_shear_profile,
+                    "Lees-Edwards: velocities relative to the linear profile u(y) before the cell mean (docs/f1.md)");
+  command->add_option("--speed-bins", o->f1.speed_bins, "Polar bins in the speed")->default_val(64);
+  command->add_option("--angle-bins", o->f1.angle_bins, "Polar bins in the angle (multiple of 8)")->default_val(64);
+  command->add_option("--speed-max", o->f1.speed_max, "Last speed edge (0: the largest sampled speed)")->default_val(0.0);
+  command->add_option("--fit-quantile", o->f1.fit_quantile, "Twice fit (5.27) up to this quantile of the speed")
+      ->default_val(0.999);
+  command->add_option("--bootstrap", o->f1.bootstrap, "Bootstrap replicates over snapshots (0: none)")->default_val(20);
+  command->add_option("--seed", o->f1.seed, "Seed of the bootstrap")->default_val(1);
+  command->add_option("--min-samples", o->f1.min_samples, "Skip (with a warning) windows with fewer samples")
+      ->default_val(10000);
+  command->add_option("--profile-angle", o->profile_angle, "Angle of the f(v) profiles (Fig 5.10)")->default_val(M_PI);
+  command->add_option("--profile-speed", o->profile_speed, "Speed of the f(theta) profiles (Fig 5.11; default sqrt(2T))");
+  command->add_option("--out", o->out, "Output HDF5 file; CSV tables are written beside it")->default_val("f1.h5");
+  command->callback([o] { throw CLI::RuntimeError(analyze_f1(*o)); });
+}
+
+}  // namespace granule::app

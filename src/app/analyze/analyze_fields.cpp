@@ -1,0 +1,113 @@
+// `granule analyze fields SNAPSHOTS.h5`: the coarse-grained fields of §1.4.3 from saved
+// configurations — per frame the instantaneous fields, and the running average over the chosen
+// frames (the last frame holds the average over all of them).  The collisional stress needs the
+// collisions themselves and is measured only during a run ([fields] in the config, fields.h5).
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "analysis/cell_fields.hpp"
+#include "app/exit_codes.hpp"
+#include "app/analyze/analyze_command.hpp"
+#include "granule/version.hpp"
+#include "io/fields_file.hpp"
+#include "io/snapshot_file.hpp"
+
+namespace granule::app {
+
+namespace {
+
+struct FieldsOptions {
+  std::string snapshots;
+  std::vector<int> cells;
+  std::int64_t first = 0;
+  std::int64_t last = -1;
+  bool subtract_shear = false;
+  std::string out = "fields_from_snapshots.h5";
+};
+
+int analyze_fields(const FieldsOptions& o) {
+  SnapshotRead head;
+  try {
+    head = read_snapshot(o.snapshots, 0);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "granule analyze fields: error: cannot read {}: {}\n", o.snapshots, error.what());
+    return kExitBadInput;
+  }
+  const SystemParams& s = head.metadata.system;
+  const std::int64_t first = o.first < 0 ? head.frames + o.first : o.first;
+  const std::int64_t last = o.last < 0 ? head.frames + o.last : o.last;
+  if (first < 0 || last >= head.frames || first > last) {
+    fmt::print(stderr, "granule analyze fields: error: --first {} --last {} select no frames: the file has frames 0..{} "
+                       "(negative indices count from the end)\n", o.first, o.last, head.frames - 1);
+    return kExitBadInput;
+  }
+  const bool three_dimensional = s.dimension == 3;
+  FieldGrid grid = three_dimensional ? default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles)
+                                     : default_field_grid(s.length_x, s.length_y, s.particles);
+  if (!o.cells.empty()) {
+    const std::size_t axes = three_dimensional ? 3 : 2;
+    if (o.cells.size() != axes || std::any_of(o.cells.begin(), o.cells.end(), [](int n) { return n < 1 || n > (1 << 14); })) {
+      fmt::print(stderr, "granule analyze fields: error: --cells expects {} with integers in [1, 16384]\n",
+                 three_dimensional ? "nx,ny,nz" : "nx,ny");
+      return kExitBadInput;
+    }
+    grid.nx = o.cells[0];
+    grid.ny = o.cells[1];
+    if (three_dimensional) grid.nz = o.cells[2];
+  }
+  const ShearFrame frame{s.length_x, s.length_y, s.shear_velocity};
+  FieldsWriter writer(o.out, grid, FieldsMetadata{s, head.metadata.boundary, o.subtract_shear, o.snapshots, kVersion}, false);
+  CellMoments running(grid, spin_inertia(s));
+  double t_start = 0.0, c_start = 0.0;
+  for (std::int64_t k = first; k <= last; ++k) {
+    const SnapshotRead snapshot = read_snapshot(o.snapshots, k);
+    const SnapshotFrame& f = snapshot.frame;
+    if (k == first) {
+      t_start = f.clock.time;
+      c_start = f.collisions_per_particle;
+    }
+    CellMoments instant(grid, spin_inertia(s));
+    instant.add(f.particles, frame, o.subtract_shear);
+    running.add(f.particles, frame, o.subtract_shear);
+    FieldsFrame out;
+    out.t = f.clock.time;
+    out.c = f.collisions_per_particle;
+    out.t_start = t_start;
+    out.c_start = c_start;
+    out.configurations = running.configurations;
+    out.shear_offset = f.shear_offset;
+    out.shear_velocity = head.metadata.boundary == "lees-edwards" ? f.shear_velocity : 0.0;
+    out.instant = fields_from_moments(instant, frame, f.shear_offset, o.subtract_shear);
+    out.average = fields_from_moments(running, frame, f.shear_offset, o.subtract_shear);
+    writer.append(out);
+  }
+  writer.finish();
+  fmt::print("fields of frames {}..{} on {} × {}{} cells written to {}\n", first, last, grid.nx, grid.ny,
+             three_dimensional ? fmt::format(" × {}", grid.nz) : "", o.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_analyze_fields(CLI::App& analyze) {
+  auto o = std::make_shared<FieldsOptions>();
+  CLI::App* command = analyze.add_subcommand(
+      "fields", "Coarse-grained density, velocity, temperature, kinetic stress and vorticity (thesis §1.4.3) of saved "
+                "snapshots, per frame and averaged over the frames (schema: README, fields.h5)");
+  command->add_option("snapshots", o->snapshots, "snapshots.h5 of a run")->required()->check(CLI::ExistingFile);
+  command->add_option("--cells", o->cells, "Coarse-graining cells nx,ny (3D: nx,ny,nz; default: about 20 particles per cell)")->delimiter(',');
+  command->add_option("--first", o->first, "First frame (negative counts from the end)")->default_val(0);
+  command->add_option("--last", o->last, "Last frame (negative counts from the end)")->default_val(-1);
+  command->add_flag("--subtract-shear", o->subtract_shear,
+                    "Take velocities relative to the Lees–Edwards profile u(y) = γ (y − L_y/2) before averaging");
+  command->add_option("--out", o->out, "Output HDF5 file")->default_val("fields_from_snapshots.h5");
+  command->callback([o] { throw CLI::RuntimeError(analyze_fields(*o)); });
+}
+
+}  // namespace granule::app

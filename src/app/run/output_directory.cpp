@@ -1,0 +1,145 @@
+#include "app/run/output_directory.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "app/exit_codes.hpp"
+#include "io/io_error.hpp"
+#include "io/journaled_file_driver.hpp"
+
+namespace granule::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Everything a run writes (README.md, "Outputs"), with the temporary names of atomic writes.
+const std::vector<std::string>& run_output_names() {
+  static const std::vector<std::string> names = {
+      "config.toml", "timeseries.csv", "summary.json", "snapshots.h5", "fields.h5", "collisions.h5",
+      "checkpoint.h5", "impact_parameters.csv", "free_paths.csv", "configuration.png"};
+  return names;
+}
+
+void remove_outputs(const std::string& out, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    for (const char* suffix : {"", ".partial", ".tmp", ".partial.journal", ".partial.journal.tmp"}) {
+      std::error_code error;
+      fs::remove(fs::path(out) / (name + suffix), error);
+      if (error) throw IoError(fmt::format("cannot remove {}/{}{}: {}", out, name, suffix, error.message()));
+    }
+  }
+}
+
+// Available memory: /proc/meminfo's MemAvailable, or the cgroup limit if that is smaller.
+double available_bytes() {
+  double available = 0.0;
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string key; meminfo >> key;) {
+    double kib = 0.0;
+    meminfo >> kib;
+    if (key == "MemAvailable:") available = kib * 1024.0;
+    meminfo.ignore(256, '\n');
+  }
+  std::ifstream limit("/sys/fs/cgroup/memory.max");
+  double cgroup = 0.0;
+  if (limit >> cgroup && cgroup > 0.0 && (available == 0.0 || cgroup < available)) available = cgroup;
+  return available;
+}
+
+}  // namespace
+
+void prepare_new_output_directory(const std::string& out, bool force) {
+  std::error_code error;
+  const fs::file_status status = fs::status(out, error);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    throw CommandFailure{kExitBadInput, fmt::format("--out {} exists and is not a directory", out)};
+  }
+  if (fs::is_directory(status) && !fs::is_empty(out, error)) {
+    if (!force) {
+      throw CommandFailure{kExitBadInput,
+                           fmt::format("--out {} already holds files; give another directory, --force to replace the "
+                                       "outputs of the run in it, or --resume {} to continue that run", out, out)};
+    }
+    remove_outputs(out, run_output_names());
+  }
+  fs::create_directories(out, error);
+  if (error) throw IoError(fmt::format("cannot create the output directory {}: {}", out, error.message()));
+  // Root passes permission checks, an immutable directory or a read-only mount does not: try.
+  const fs::path probe = fs::path(out) / ".granule-write-probe";
+  bool written = false;
+  {
+    std::ofstream file(probe);
+    file << "probe\n";
+    file.flush();
+    written = static_cast<bool>(file);
+  }
+  fs::remove(probe, error);
+  if (!written) throw IoError(fmt::format("cannot write into the output directory {}", out));
+}
+
+void remove_end_of_run_outputs(const std::string& out) {
+  remove_outputs(out, {"summary.json", "collisions.h5", "impact_parameters.csv", "free_paths.csv", "configuration.png"});
+}
+
+std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
+  fs::path aside = fs::path(out) / fmt::format("set_aside_after_frame_{}", frame);
+  for (int copy = 2; fs::exists(aside); ++copy) aside = fs::path(out) / fmt::format("set_aside_after_frame_{}_{}", frame, copy);
+  std::error_code error;
+  fs::create_directory(aside, error);
+  if (error) throw IoError(fmt::format("cannot create {}: {}", aside.string(), error.message()));
+  for (const std::string& name : run_output_names()) {
+    // A killed run's last flush first (io/journaled_file_driver.hpp): the journal stays behind.
+    const fs::path growing = fs::path(out) / (name + ".partial");
+    if (fs::exists(growing)) h5::replay_journal(growing.string());
+    for (const char* suffix : {"", ".partial"}) {
+      const fs::path from = fs::path(out) / (name + suffix);
+      if (!fs::exists(from)) continue;
+      fs::rename(from, aside / (name + suffix), error);
+      if (error) throw IoError(fmt::format("cannot move {} aside: {}", from.string(), error.message()));
+    }
+  }
+  return aside.string();
+}
+
+std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed) {
+  for (const std::string& assignment : overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    const bool allowed = key.rfind("run.", 0) == 0 || key.rfind("output.", 0) == 0 ||
+                         std::find(also_allowed.begin(), also_allowed.end(), key) != also_allowed.end();
+    if (!allowed) return key;
+  }
+  return {};
+}
+
+void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
+  // Measured peaks (granule bench, /usr/bin/time, heaptrack; docs/performance.md): the engine
+  // ~95 B per disk and ~111 per sphere, +8 with the TC model, +16 polydisperse, +8 (+24) for
+  // spinning disks (spheres); beside it, at most the positions and cell binning of the flow
+  // classification (32 B per disk) or a block-read output; a 2D run of 10^7 disks with every
+  // default output peaked at 151 B per disk.  Per cell of a measurement grid ~40 doubles; per
+  // engine cell its list head.
+  const SystemParams& s = config.system;
+  const bool spheres = s.dimension == 3;
+  double per_particle = spheres ? 111.0 : 95.0;
+  if (s.tc_duration > 0.0) per_particle += 8.0;
+  if (!config.diameters.monodisperse()) per_particle += 16.0;
+  if (s.roughness.rough) per_particle += spheres ? 24.0 : 8.0;
+  per_particle += 48.0;  // the transients above, with a margin
+  const auto n = static_cast<double>(s.particles);
+  const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
+                             static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
+  const double needed = per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
+  const double available = available_bytes();
+  if (available > 0.0 && needed > available) {
+    throw CommandFailure{kExitOutOfMemory,
+                         fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
+                                     config.system.particles, needed / (1 << 30), available / (1 << 30))};
+  }
+}
+
+}  // namespace granule::app
