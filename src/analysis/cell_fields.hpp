@@ -22,7 +22,7 @@
 
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/field_grid.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "geometry/vec.hpp"
 #include "engine/state_blocks.hpp"
 #include "engine/system_params.hpp"

@@ -15,7 +15,7 @@
 #include "memory/huge_page_allocator.hpp"
 #include "memory/prefetch_lines.hpp"
 
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "engine/simulation.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule::driver {
 

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <string>
 
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

@@ -30,7 +30,7 @@
 #include "engine/particle_record.hpp"
 #include "engine/scan_types.hpp"
 #include "memory/huge_page_allocator.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "engine/state_blocks.hpp"
 #include "engine/stop_reason.hpp"
 #include "engine/system_params.hpp"

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "events/event_slot.hpp"
 #include "events/far_chunks.hpp"
 #include "memory/huge_page_allocator.hpp"

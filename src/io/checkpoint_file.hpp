@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

@@ -48,7 +48,7 @@
 #include "analysis/field_grid.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

@@ -20,7 +20,7 @@
 #include "analysis/density_windows.hpp"
 #include "analysis/histogram.hpp"
 #include "engine/observer.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

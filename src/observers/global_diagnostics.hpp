@@ -20,7 +20,7 @@
 #include "analysis/flow_classification.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/observer.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "engine/system_params.hpp"
 #include "observers/wall_stress.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "engine/observer.hpp"
 #include "engine/simulation.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 
 namespace granule {
 

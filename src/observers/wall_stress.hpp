@@ -15,7 +15,7 @@
 #include <string>
 
 #include "engine/observer.hpp"
-#include "engine/state_archive.hpp"
+#include "archive/state_archive.hpp"
 #include "engine/system_params.hpp"
 
 namespace granule {
