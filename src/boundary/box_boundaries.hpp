@@ -51,6 +51,7 @@ class BoxBoundaries {
       kind_[static_cast<std::size_t>(a)] = walls[static_cast<std::size_t>(a)] ? AxisBoundary::kWalls
                                            : a == 1                           ? AxisBoundary::kLeesEdwards
                                                                               : AxisBoundary::kPeriodic;
+      walled_ = walled_ || !has_images(a);
     }
   }
 
@@ -125,12 +126,14 @@ class BoxBoundaries {
     if (has_images(1)) r[0] -= length(0) * std::floor(frame_.sheared_x(r[0], r[1], strain) / length(0));
   }
 
-  // The earliest wall contact of a grain of radius `radius` now at r moving at v on `flight`
+  // The earliest wall contact of a grain of radius `radius()` now at r moving at v on `flight`
   // (motion/motion.hpp), if earlier than `best`: its delay into `best` and its face into `face`.
   // Contact is when the centre is one radius from the wall.
-  template <typename Flight>
-  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, double radius, double& best,
+  template <typename Flight, typename Radius>
+  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, Radius&& grain_radius, double& best,
                          int& face) const {
+    if (!walled_) return;
+    const double radius = grain_radius();
     for (int axis = 0; axis < D; ++axis) {
       if (has_images(axis)) continue;
       if (const double t = flight.time_to_plane(axis, r[axis], v[axis], radius, -1); t < best) {
@@ -164,6 +167,7 @@ class BoxBoundaries {
 
  private:
   std::array<AxisBoundary, D> kind_{};
+  bool walled_ = false;  // some axis has walls
   std::array<WallParams, 6> wall_{};
   ShearFrame frame_;
   std::array<double, 3> length_{1.0, 1.0, 1.0};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "boundary/box_boundaries.hpp"
 #include "geometry/vec.hpp"
@@ -21,19 +22,25 @@ struct FlightState {
   Vec<D> v;
 };
 
-// A cell crossing: the cell entered and, out through a face of the box, the flight after entering
-// from the image on the other side (thesis §1.4.2 across a Lees–Edwards face).
+// Entering the box from the image on the other side of a face: the new flight, and across a
+// Lees–Edwards face (thesis §1.4.2) the change of v_x that observers are told of.
 template <int D>
-struct CrossingPlan {
-  std::int32_t particle = -1;
-  int axis = 0;
-  int direction = 1;
-  std::int32_t new_cell = 0;
-  bool enters_from_image = false;
-  bool from_moving_image = false;  // a Lees–Edwards image: v_x changes, observers are told
-  FlightState<D> flight;           // when it enters from an image
+struct ImageEntry {
+  FlightState<D> flight;
+  bool moving_image = false;
   double velocity_x_before = 0.0;
   double velocity_x_after = 0.0;
+};
+
+// A cell crossing: the cell entered and, out through a face of the box, the entry from the image.
+// Small and built whole: most events of a dilute gas are crossings.
+template <int D>
+struct CrossingPlan {
+  std::int32_t particle;
+  int axis;
+  int direction;
+  std::int32_t new_cell;
+  std::optional<ImageEntry<D>> entry;
 };
 
 // A collision of `first` and `second`: unless the pair has stopped approaching (re-validated,

@@ -189,6 +189,8 @@ class Simulation {
   // The events, each planned from the state without changing it and then committed
   // (engine/event_plans.hpp, engine/simulation_events.cpp).
   CrossingPlan<D> plan_crossing(std::int32_t i, EventKind kind) const;
+  // Particle i entering the box from the image across the face of `axis` in `direction`.
+  ImageEntry<D> image_entry(std::int32_t i, int axis, int direction) const;
   void commit(const CrossingPlan<D>& plan);
   CollisionPlan<D> plan_collision(std::int32_t i, std::int32_t j) const;
   bool commit(const CollisionPlan<D>& plan);  // true if a physical collision was executed

@@ -26,44 +26,51 @@ void Simulation<D>::set_flight(std::int32_t i, const FlightState<D>& flight) {
 
 template <int D>
 CrossingPlan<D> Simulation<D>::plan_crossing(std::int32_t i, EventKind kind) const {
-  CrossingPlan<D> plan;
-  plan.particle = i;
-  plan.axis = crossing_axis(kind);
-  plan.direction = crossing_direction(kind);
+  const int axis = crossing_axis(kind);
+  const int direction = crossing_direction(kind);
   std::array<int, D> cell = cell_coordinates(slot(i).cell());
-  int& c = cell[static_cast<std::size_t>(plan.axis)];
-  c += plan.direction;
-  if (c < 0 || c >= grid_.count(plan.axis)) {
+  int& c = cell[static_cast<std::size_t>(axis)];
+  c += direction;
+  std::optional<ImageEntry<D>> entry;
+  if (c < 0 || c >= grid_.count(axis)) {
     // Out through a face of the box: in from the image on the other side.
-    c -= plan.direction * grid_.count(plan.axis);
-    plan.enters_from_image = true;
-    const auto image = boundaries_.image_across(plan.axis, plan.direction, strain());
-    plan.flight = {particles_[at(i)].r, particles_[at(i)].v};
-    for (int a = 0; a < D; ++a) plan.flight.r[a] -= image.position[a];
-    if (boundaries_.moving_images(plan.axis)) {
-      plan.from_moving_image = true;
-      Vector v = velocity_now(i);
-      plan.velocity_x_before = v[0];
-      v[0] -= image.velocity_x;
-      plan.velocity_x_after = v[0];
-      motion_.start_flight(plan.flight.r, plan.flight.v, v, t_now_);
-    }
+    c -= direction * grid_.count(axis);
+    entry = image_entry(i, axis, direction);
   }
   if constexpr (D == 2) {
-    plan.new_cell = grid_.index(cell[0], cell[1]);
+    return {i, axis, direction, grid_.index(cell[0], cell[1]), entry};
   } else {
-    plan.new_cell = grid_.index(cell[0], cell[1], cell[2]);
+    return {i, axis, direction, grid_.index(cell[0], cell[1], cell[2]), entry};
   }
-  return plan;
+}
+
+template <int D>
+ImageEntry<D> Simulation<D>::image_entry(std::int32_t i, int axis, int direction) const {
+  ImageEntry<D> entry;
+  const auto image = boundaries_.image_across(axis, direction, strain());
+  entry.flight = {particles_[at(i)].r, particles_[at(i)].v};
+  for (int a = 0; a < D; ++a) entry.flight.r[a] -= image.position[a];
+  if (boundaries_.moving_images(axis)) {
+    entry.moving_image = true;
+    Vector v = velocity_now(i);
+    entry.velocity_x_before = v[0];
+    v[0] -= image.velocity_x;
+    entry.velocity_x_after = v[0];
+    motion_.start_flight(entry.flight.r, entry.flight.v, v, t_now_);
+  }
+  return entry;
 }
 
 template <int D>
 void Simulation<D>::commit(const CrossingPlan<D>& plan) {
   const std::int32_t i = plan.particle;
-  if (plan.enters_from_image) set_flight(i, plan.flight);
-  if (plan.from_moving_image && !observers_.empty()) {
-    const BoundaryCrossingRecord record{time(), user_id(i), plan.direction, plan.velocity_x_before, plan.velocity_x_after};
-    for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
+  if (plan.entry) {
+    set_flight(i, plan.entry->flight);
+    if (plan.entry->moving_image && !observers_.empty()) {
+      const BoundaryCrossingRecord record{time(), user_id(i), plan.direction, plan.entry->velocity_x_before,
+                                          plan.entry->velocity_x_after};
+      for (EventObserver<D>* observer : observers_) observer->on_boundary_crossing(record);
+    }
   }
   lists_.remove(particles_, i, slot(i).cell());
   lists_.insert(particles_, i, plan.new_cell);
@@ -71,38 +78,31 @@ void Simulation<D>::commit(const CrossingPlan<D>& plan) {
   predict_after_crossing(i, plan.axis, plan.direction);
 }
 
+// Plans are built whole at the end, not filled in member by member: a plan default-constructed
+// first would be zeroed (its vectors' initialisers) and then written again, on every collision.
 template <int D>
 CollisionPlan<D> Simulation<D>::plan_collision(std::int32_t i, std::int32_t j) const {
-  CollisionPlan<D> plan;
-  plan.first = i;
-  plan.second = j;
   const Vector ri = position_now(i);
   const Vector rj = position_now(j);
-  plan.image = nearest_image(rj - ri);
-  const auto& shift = plan.image.shift;
+  const PartnerImage image = nearest_image(rj - ri);
   Vector r;
-  for (int a = 0; a < D; ++a) r[a] = rj[a] + shift.position[a] - ri[a];
+  for (int a = 0; a < D; ++a) r[a] = rj[a] + image.shift.position[a] - ri[a];
   const Vector v1 = velocity_now(i);
   Vector v2 = velocity_now(j);
-  v2[0] += shift.velocity_x;
+  v2[0] += image.shift.velocity_x;
   // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
   // round-off; a pair that is no longer approaching must not collide.
-  if (!approaching(r, v2 - v1)) return plan;
-  plan.approaching = true;
-  plan.first_position = ri;
-  plan.first_velocity_before = v1;
-  plan.second_velocity_before = v2;
-  plan.k_hat = (1.0 / norm(r)) * r;
+  if (!approaching(r, v2 - v1)) return {.first = i, .second = j, .approaching = false};
+  const Vector k_hat = (1.0 / norm(r)) * r;
   const CollisionLaw law = pair_law();
-  plan.first_side = contact_side(i, v1);
-  plan.second_side = contact_side(j, v2);
-  if (!observers_.empty()) plan.energy_before = plan.first_side.kinetic_energy() + plan.second_side.kinetic_energy();
-  plan.outcome = law.collide(plan.first_side, plan.second_side, plan.k_hat, contact_restitution(law, i, j));
-  plan.first_flight = flight_through_now(i, plan.first_side.velocity);
-  Vector v2_after = plan.second_side.velocity;
-  v2_after[0] -= shift.velocity_x;  // its own velocity, not its image's
-  plan.second_flight = flight_through_now(j, v2_after);
-  return plan;
+  ContactSide<D> first = contact_side(i, v1);
+  ContactSide<D> second = contact_side(j, v2);
+  const double energy_before = observers_.empty() ? 0.0 : first.kinetic_energy() + second.kinetic_energy();
+  const ContactOutcome<D> outcome = law.collide(first, second, k_hat, contact_restitution(law, i, j));
+  Vector v2_after = second.velocity;
+  v2_after[0] -= image.shift.velocity_x;  // its own velocity, not its image's
+  return {i, j, true, flight_through_now(i, first.velocity), flight_through_now(j, v2_after), first, second, outcome,
+          image, ri, k_hat, v1, v2, energy_before};
 }
 
 template <int D>
@@ -159,23 +159,18 @@ bool Simulation<D>::commit(const CollisionPlan<D>& plan) {
 
 template <int D>
 WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
-  WallHitPlan<D> plan;
-  plan.particle = i;
-  plan.face = face;
   const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
-  plan.velocity_before = velocity_now(i);
+  const Vector before = velocity_now(i);
   // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
-  if (dot(plan.velocity_before, k_hat) <= 0.0) return plan;
-  plan.approaching = true;
+  if (dot(before, k_hat) <= 0.0) return {.particle = i, .face = face, .approaching = false};
   // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
   // the same law as grains (the TC model holds at walls too).
   const CollisionLaw law = wall_law(face);
-  plan.side = contact_side(i, plan.velocity_before);
+  ContactSide<D> grain = contact_side(i, before);
   ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
-  if (!observers_.empty()) plan.energy_before = plan.side.kinetic_energy();
-  plan.outcome = law.collide(plan.side, wall, k_hat, contact_restitution(law, i, -1));
-  plan.flight = flight_through_now(i, plan.side.velocity);
-  return plan;
+  const double energy_before = observers_.empty() ? 0.0 : grain.kinetic_energy();
+  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, contact_restitution(law, i, -1));
+  return {i, face, true, flight_through_now(i, grain.velocity), grain, outcome, before, energy_before};
 }
 
 template <int D>
@@ -213,6 +208,7 @@ void Simulation<D>::commit(const WallHitPlan<D>& plan) {
 template FlightState<2> Simulation<2>::flight_through_now(std::int32_t, const Vec<2>&) const;
 template void Simulation<2>::set_flight(std::int32_t, const FlightState<2>&);
 template CrossingPlan<2> Simulation<2>::plan_crossing(std::int32_t, EventKind) const;
+template ImageEntry<2> Simulation<2>::image_entry(std::int32_t, int, int) const;
 template void Simulation<2>::commit(const CrossingPlan<2>&);
 template CollisionPlan<2> Simulation<2>::plan_collision(std::int32_t, std::int32_t) const;
 template bool Simulation<2>::commit(const CollisionPlan<2>&);
@@ -221,6 +217,7 @@ template void Simulation<2>::commit(const WallHitPlan<2>&);
 template FlightState<3> Simulation<3>::flight_through_now(std::int32_t, const Vec<3>&) const;
 template void Simulation<3>::set_flight(std::int32_t, const FlightState<3>&);
 template CrossingPlan<3> Simulation<3>::plan_crossing(std::int32_t, EventKind) const;
+template ImageEntry<3> Simulation<3>::image_entry(std::int32_t, int, int) const;
 template void Simulation<3>::commit(const CrossingPlan<3>&);
 template CollisionPlan<3> Simulation<3>::plan_collision(std::int32_t, std::int32_t) const;
 template bool Simulation<3>::commit(const CollisionPlan<3>&);

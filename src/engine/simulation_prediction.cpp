@@ -52,21 +52,15 @@ typename Simulation<D>::Crossing Simulation<D>::next_crossing(const Flight& flig
   for (int axis = 1; axis < D; ++axis) {
     const double size = grid_.size(axis);
     const bool images = boundaries_.has_images(axis);
-    if (images || cell[axis] < grid_.count(axis) - 1) {
-      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], (cell[axis] + 1) * size, 1); t < best) {
-        best = t;
-        kind = crossing_through(axis, 1);
-      }
-    }
-    if (images || cell[axis] > 0) {
-      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], cell[axis] * size, -1); t < best) {
-        best = t;
-        kind = crossing_through(axis, 0);
-      }
+    const SlabExit exit = flight.exit_from_slab(axis, r[axis], v[axis], cell[axis] * size, (cell[axis] + 1) * size,
+                                                images || cell[axis] > 0, images || cell[axis] < grid_.count(axis) - 1);
+    if (exit.delay < best) {
+      best = exit.delay;
+      kind = crossing_through(axis, exit.direction > 0 ? 1 : 0);
     }
   }
   int face = -1;
-  boundaries_.earliest_wall_hit(flight, r, v, radius_of(i), best, face);
+  boundaries_.earliest_wall_hit(flight, r, v, [&] { return radius_of(i); }, best, face);
   if (face >= 0) kind = wall_hit(face);
   if (best == kInf) kind = EventKind::kNone;
   return {kind, best};

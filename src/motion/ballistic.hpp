@@ -10,6 +10,12 @@
 
 namespace granule {
 
+// The first exit from a slab between two planes: its delay and the face (+1 upper, −1 lower).
+struct SlabExit {
+  double delay;
+  int direction;
+};
+
 template <int D>
 struct Ballistic {
   // Coordinate `axis` and its velocity a delay t after the clock base, for the base state (r, v).
@@ -28,6 +34,15 @@ struct Ballistic {
   double time_to_plane(int /*axis*/, double position, double velocity, double plane, int direction) const {
     if (direction > 0 ? velocity > 0.0 : velocity < 0.0) return std::max(0.0, (plane - position) / velocity);
     return kNever;
+  }
+  // The delay until coordinate `axis` leaves the slab [lower, upper] through a face it may leave
+  // by (`through_lower`, `through_upper`), and the face's direction (+1 upper, −1 lower): only the
+  // face it moves towards.
+  SlabExit exit_from_slab(int /*axis*/, double position, double velocity, double lower, double upper, bool through_lower,
+                          bool through_upper) const {
+    if (velocity > 0.0 && through_upper) return {std::max(0.0, (upper - position) / velocity), 1};
+    if (velocity < 0.0 && through_lower) return {std::max(0.0, (lower - position) / velocity), -1};
+    return {kNever, 1};
   }
 };
 

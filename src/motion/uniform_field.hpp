@@ -8,6 +8,7 @@
 #include <array>
 
 #include "geometry/vec.hpp"
+#include "motion/ballistic.hpp"
 #include "physics/crossing_time.hpp"
 
 namespace granule {
@@ -25,11 +26,21 @@ struct UniformField {
     v += g[axis] * t;
   }
   double half_acceleration(int axis) const { return 0.5 * g[axis]; }
-  // As Ballistic::time_to_plane, along the parabola.
+  // As Ballistic::time_to_plane and exit_from_slab, along the parabola (which may turn back
+  // towards the other face: both are tried, the upper first on a tie).
   double time_to_plane(int axis, double position, double velocity, double plane, int direction) const {
     const double half_g = 0.5 * g[axis];
     return direction > 0 ? first_exit_time(half_g, velocity, position - plane)
                          : first_exit_time(-half_g, -velocity, plane - position);
+  }
+  SlabExit exit_from_slab(int axis, double position, double velocity, double lower, double upper, bool through_lower,
+                          bool through_upper) const {
+    SlabExit exit{kNever, 1};
+    if (through_upper) exit.delay = time_to_plane(axis, position, velocity, upper, 1);
+    if (through_lower) {
+      if (const double t = time_to_plane(axis, position, velocity, lower, -1); t < exit.delay) exit = {t, -1};
+    }
+    return exit;
   }
 };
 
