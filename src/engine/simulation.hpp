@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "archive/state_archive.hpp"
 #include "boundary/box_boundaries.hpp"
 #include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
@@ -30,7 +31,6 @@
 #include "engine/particle_record.hpp"
 #include "engine/scan_types.hpp"
 #include "memory/huge_page_allocator.hpp"
-#include "archive/state_archive.hpp"
 #include "engine/state_blocks.hpp"
 #include "engine/stop_reason.hpp"
 #include "engine/system_params.hpp"
