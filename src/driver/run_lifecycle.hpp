@@ -14,7 +14,7 @@
 
 #include "driver/run_measurements.hpp"
 #include "driver/run_start.hpp"
-#include "driver/schedule.hpp"
+#include "observers/schedule.hpp"
 #include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"

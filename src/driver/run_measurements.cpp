@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "driver/schedule.hpp"
-#include "observers/observables.hpp"
+#include "observers/schedule.hpp"
+#include "observables/observables.hpp"
 
 namespace granule::driver {
 

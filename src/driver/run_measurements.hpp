@@ -1,5 +1,5 @@
 // The measurements of a run beyond its time series: the observables its configuration switches on
-// (observers/observables.hpp: today the fields of [fields] and the collision statistics of
+// (observables/observables.hpp: today the fields of [fields] and the collision statistics of
 // [collisions]), the same for disks and spheres.  The run loop asks when it must stop for them and
 // calls back after each step; each observable sees every event and writes its own file.
 #pragma once
@@ -12,7 +12,7 @@
 #include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"
-#include "observers/observable.hpp"
+#include "observables/observable.hpp"
 
 namespace granule::driver {
 

@@ -17,7 +17,7 @@
 #include "driver/progress.hpp"
 #include "driver/run_lifecycle.hpp"
 #include "driver/run_summary.hpp"
-#include "driver/schedule.hpp"
+#include "observers/schedule.hpp"
 #include "driver/stop_loop.hpp"
 #include "engine/simulation.hpp"
 #include "io/config.hpp"

@@ -92,7 +92,12 @@ CollisionPlan<D> Simulation<D>::plan_collision(std::int32_t i, std::int32_t j) c
   v2[0] += image.shift.velocity_x;
   // Re-validate (Bannerman et al. 2014): near-simultaneous events may have been reordered by
   // round-off; a pair that is no longer approaching must not collide.
-  if (!approaching(r, v2 - v1)) return {.first = i, .second = j, .approaching = false};
+  if (!approaching(r, v2 - v1)) {
+    CollisionPlan<D> stale;  // nothing to apply
+    stale.first = i;
+    stale.second = j;
+    return stale;
+  }
   const Vector k_hat = (1.0 / norm(r)) * r;
   const CollisionLaw law = pair_law();
   ContactSide<D> first = contact_side(i, v1);
@@ -162,7 +167,12 @@ WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
   const Vector before = velocity_now(i);
   // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
-  if (dot(before, k_hat) <= 0.0) return {.particle = i, .face = face, .approaching = false};
+  if (dot(before, k_hat) <= 0.0) {
+    WallHitPlan<D> stale;  // nothing to apply
+    stale.particle = i;
+    stale.face = face;
+    return stale;
+  }
   // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
   // the same law as grains (the TC model holds at walls too).
   const CollisionLaw law = wall_law(face);

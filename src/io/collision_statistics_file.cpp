@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/collision_statistics_fits.hpp"
+#include "observers/collision_statistics_fits.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_util.hpp"
 #include "theory/hard_spheres.hpp"

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <tuple>
 
-#include "analysis/collision_statistics_fits.hpp"
+#include "observers/collision_statistics_fits.hpp"
 #include "observers/collisional_stress.hpp"
 #include "observers/free_paths.hpp"
 #include "observers/impact_parameters.hpp"

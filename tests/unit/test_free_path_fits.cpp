@@ -28,7 +28,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/collision_statistics_fits.hpp"
+#include "observers/collision_statistics_fits.hpp"
 #include "observers/free_paths.hpp"
 #include "init/random.hpp"
 #include "unit/chi_square.hpp"

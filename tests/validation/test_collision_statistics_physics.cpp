@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/cell_fields.hpp"
-#include "analysis/collision_statistics_fits.hpp"
+#include "observers/collision_statistics_fits.hpp"
 #include "observers/collisional_stress.hpp"
 #include "observers/free_paths.hpp"
 #include "observers/impact_parameters.hpp"

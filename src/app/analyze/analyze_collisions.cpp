@@ -14,7 +14,7 @@
 #include "app/analyze/analyze_command.hpp"
 #include "driver/stop_loop.hpp"
 #include "driver/run_measurements.hpp"
-#include "driver/schedule.hpp"
+#include "observers/schedule.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_file.hpp"
 

@@ -1,7 +1,7 @@
 // An observable of a run as a plug-in: a measurement fed by the engine's events (collisions, wall
 // collisions, boundary crossings, as EventObserver delivers them) and by the configurations the
 // run samples, kept across checkpoints, and written to its own output file.  The driver holds the
-// configured ones in a list (observers/observables.hpp) and calls each at the same points of the
+// configured ones in a list (observables/observables.hpp) and calls each at the same points of the
 // run; none of them changes the trajectory (they only read the engine and its records).
 #pragma once
 

@@ -1,4 +1,4 @@
-// The registry of a run's observables (observers/observable.hpp): those its configuration switches
+// The registry of a run's observables (observables/observable.hpp): those its configuration switches
 // on, in the order the driver calls them, and what several of them share.  A new observable is a
 // file of its own in this folder defining its factory, and one line in observables.cpp.
 #pragma once
@@ -10,7 +10,7 @@
 
 #include "analysis/field_grid.hpp"
 #include "io/config.hpp"
-#include "observers/observable.hpp"
+#include "observables/observable.hpp"
 
 namespace granule {
 

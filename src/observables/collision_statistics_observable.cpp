@@ -8,13 +8,13 @@
 #include <optional>
 #include <utility>
 
-#include "analysis/collision_statistics_fits.hpp"
-#include "driver/schedule.hpp"
+#include "observers/collision_statistics_fits.hpp"
+#include "observers/schedule.hpp"
 #include "granule/version.hpp"
 #include "io/collision_statistics_file.hpp"
 #include "observers/free_paths.hpp"
 #include "observers/impact_parameters.hpp"
-#include "observers/observables.hpp"
+#include "observables/observables.hpp"
 
 namespace granule {
 

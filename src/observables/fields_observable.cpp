@@ -5,11 +5,11 @@
 #include <memory>
 #include <utility>
 
-#include "driver/schedule.hpp"
+#include "observers/schedule.hpp"
 #include "granule/version.hpp"
 #include "io/fields_file.hpp"
 #include "observers/collisional_stress.hpp"
-#include "observers/observables.hpp"
+#include "observables/observables.hpp"
 
 namespace granule {
 

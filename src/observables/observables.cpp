@@ -1,4 +1,4 @@
-#include "observers/observables.hpp"
+#include "observables/observables.hpp"
 
 namespace granule {
 

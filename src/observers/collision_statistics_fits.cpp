@@ -1,4 +1,4 @@
-#include "analysis/collision_statistics_fits.hpp"
+#include "observers/collision_statistics_fits.hpp"
 
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
