@@ -258,6 +258,16 @@ std::string claims_json(const Report& report) {
 
 }  // namespace
 
+std::string figure_json(const Figure& f) {
+  nlohmann::json series = nlohmann::json::array();
+  for (const FigureSeries& s : f.series) {
+    series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}, {"error", s.error}, {"line", s.line}});
+  }
+  const nlohmann::json figure = {{"title", f.thesis_figure}, {"x_label", f.x_label}, {"y_label", f.y_label},
+                                 {"log_x", f.log_x},         {"log_y", f.log_y},     {"series", series}};
+  return figure.dump() + "\n";
+}
+
 std::string base64(const std::string& bytes) {
   static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;

@@ -32,6 +32,11 @@ void write_report(const std::filesystem::path& dir, const Report& report);
 // One line per claim for the terminal: "agrees      validation.haff_sonine: 1.004 ± 0.003 (expected 1, ±3 %)".
 std::vector<std::string> claim_summary_lines(const Report& report);
 
+// The numbers of one figure as the JSON text of figures/<name>.json, which
+// python/granule_plots/reproduce_figure.py draws.  NaN is not JSON: it is written as null, which
+// the script reads as a missing point.
+std::string figure_json(const Figure& figure);
+
 // RFC 4648 base64 of `bytes` (the inline pictures of report.html).
 std::string base64(const std::string& bytes);
 

@@ -1,21 +1,16 @@
 // `granule analyze collisions RUN_DIR`: collision statistics (impact parameters, free paths) and
-// fields with the collisional stress, measured after the fact.  Collisions are not stored, so the
-// run is continued from a chosen snapshot frame — the same physical state and clock, with new
-// round-off, hence a statistically equivalent trajectory rather than the same bits — with the
-// measurements of [fields] and [collisions] attached (settable with --set), for as many collisions
-// per particle as asked.
+// fields with the collisional stress, measured after the fact by continuing the run from a chosen
+// snapshot frame (driver/measurement_replay.hpp) with the measurements of [fields] and
+// [collisions] attached (settable with --set), for as many collisions per particle as asked.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <filesystem>
 #include <memory>
 
 #include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
-#include "driver/stop_loop.hpp"
-#include "driver/run_measurements.hpp"
-#include "observers/schedule.hpp"
-#include "io/atomic_file.hpp"
+#include "driver/measurement_replay.hpp"
+#include "io/config.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule::app {
@@ -29,34 +24,6 @@ struct CollisionsOptions {
   std::vector<std::string> overrides;
   std::string out;
 };
-
-// The continuation itself, for disks (D = 2) or spheres (D = 3).
-template <int D>
-int continue_and_measure(const CollisionsOptions& o, const RunConfig& config, const SnapshotRead& snapshot) {
-  const SystemParams& system = config.system;
-  const CellGridChoice choice = choose_cell_grid(engine_grid_request(config));
-  if (!choice.grid) {
-    fmt::print(stderr, "granule analyze collisions: error: {}\n", choice.error);
-    return kExitBadInput;
-  }
-  Simulation<D> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
-  const std::string out = o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, sim.collisions_per_particle()) : o.out;
-  std::filesystem::create_directories(out);
-  driver::RunMeasurements<D> measurements(config, out);
-  measurements.start(sim);
-  const std::int64_t target =
-      sim.collisions() + std::llround(o.collisions_per_particle * static_cast<double>(system.particles));
-  while (true) {
-    const StopReason reason = driver::advance_to_next_stop<D>(sim, {&measurements}, {target, driver::kInf});
-    if (sim.collisions() >= target || reason == StopReason::kNoEvents || reason == StopReason::kInelasticCollapse) break;
-  }
-  measurements.after_step(sim, true);
-  const nlohmann::json figures = measurements.finish(sim);
-  write_file_atomically(out + "/summary.json", figures.dump(2) + "\n");
-  fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
-             snapshot.frame.collisions_per_particle, sim.collisions_per_particle(), out);
-  return 0;
-}
 
 int analyze_collisions(const CollisionsOptions& o) {
   const ConfigResult parsed = load_config_file(o.run_dir + "/config.toml", o.overrides);
@@ -79,7 +46,17 @@ int analyze_collisions(const CollisionsOptions& o) {
     fmt::print(stderr, "granule analyze collisions: error: {}/snapshots.h5 does not match its config.toml\n", o.run_dir);
     return kExitBadInput;
   }
-  return system.dimension == 3 ? continue_and_measure<3>(o, config, snapshot) : continue_and_measure<2>(o, config, snapshot);
+  const driver::ReplayOutcome replay =
+      driver::replay_with_measurements(config, snapshot, o.collisions_per_particle, [&](double c_start) {
+        return o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, c_start) : o.out;
+      });
+  if (!replay.error.empty()) {
+    fmt::print(stderr, "granule analyze collisions: error: {}\n", replay.error);
+    return kExitBadInput;
+  }
+  fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
+             snapshot.frame.collisions_per_particle, replay.collisions_per_particle, replay.out);
+  return 0;
 }
 
 }  // namespace

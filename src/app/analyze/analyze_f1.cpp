@@ -1,8 +1,6 @@
 // `granule analyze f1 SNAPSHOTS.h5 --density-window C±W --temperature-window C±W`: the
 // single-particle velocity distribution of thesis Chapter 5 in each (ρ, T) window, by the
 // cumulative sampling algorithm of §5.2, as the Appendix B table.  Docs: docs/f1.md.
-#include "app/analyze/analyze_f1.hpp"
-
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -13,8 +11,12 @@
 
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
+#include "distribution/appendix_b_comparison.hpp"
 #include "distribution/window_sampling.hpp"
+#include "io/f1_file.hpp"
+#include "io/f1_thesis_csv.hpp"
 #include "io/io_error.hpp"
+#include "io/snapshot_file.hpp"
 
 namespace granule::app {
 
@@ -67,6 +69,17 @@ std::string fits_summary(const WindowResult& r) {
   return fmt::format("phi* {}, psi* {}, series {}; h* within thesis tolerance: {}", word(r.estimate.once.speed.report),
                      word(r.estimate.once.angular.report), word(r.estimate.series.report),
                      r.quality.within_tolerance() ? "yes" : "no");
+}
+
+// One console line comparing the window's b₀⁽¹⁾ with Appendix B's in the run's units, with the
+// dimensionless √(2T) b₀⁽¹⁾ beside it.
+std::string describe_thesis_comparison(const ThesisMatch& match, const WindowResult& window) {
+  const AppendixBEntry& e = match.entry;
+  const double b1 = window.estimate.series.mean[1], error = window.errors.series.mean[1];
+  return fmt::format("  Appendix B {}at rho {:.4g}, T {:.4g} (thesis units mapped to this run's): b0^(1) = {:.4g}, "
+                     "sqrt(2T) b0^(1) = {:.3g}; here {:.4g} ± {:.2g}, sqrt(2T) b0^(1) = {:.3g} (ratio {:.3g})",
+                     match.same_window ? "" : "(nearest window) ", e.density, e.temperature, e.b1,
+                     std::sqrt(2.0 * e.temperature) * e.b1, b1, error, window.speed_scale * b1, b1 / e.b1);
 }
 
 int analyze_f1(const F1CommandOptions& o) {

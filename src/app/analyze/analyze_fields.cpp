@@ -1,7 +1,6 @@
 // `granule analyze fields SNAPSHOTS.h5`: the coarse-grained fields of §1.4.3 from saved
-// configurations — per frame the instantaneous fields, and the running average over the chosen
-// frames (the last frame holds the average over all of them).  The collisional stress needs the
-// collisions themselves and is measured only during a run ([fields] in the config, fields.h5).
+// configurations (io/fields_from_snapshots.hpp), per frame and averaged over the chosen frames.
+// The collisional stress is measured only during a run ([fields] in the config, fields.h5).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -11,11 +10,11 @@
 #include <memory>
 #include <optional>
 
-#include "analysis/cell_fields.hpp"
+#include "analysis/field_grid.hpp"
 #include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "granule/version.hpp"
-#include "io/fields_file.hpp"
+#include "io/fields_from_snapshots.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule::app {
@@ -61,33 +60,7 @@ int analyze_fields(const FieldsOptions& o) {
     grid.ny = o.cells[1];
     if (three_dimensional) grid.nz = o.cells[2];
   }
-  const ShearFrame frame{s.length_x, s.length_y, s.shear_velocity};
-  FieldsWriter writer(o.out, grid, FieldsMetadata{s, head.metadata.boundary, o.subtract_shear, o.snapshots, kVersion}, false);
-  CellMoments running(grid, spin_inertia(s));
-  double t_start = 0.0, c_start = 0.0;
-  for (std::int64_t k = first; k <= last; ++k) {
-    const SnapshotRead snapshot = read_snapshot(o.snapshots, k);
-    const SnapshotFrame& f = snapshot.frame;
-    if (k == first) {
-      t_start = f.clock.time;
-      c_start = f.collisions_per_particle;
-    }
-    CellMoments instant(grid, spin_inertia(s));
-    instant.add(f.particles, frame, o.subtract_shear);
-    running.add(f.particles, frame, o.subtract_shear);
-    FieldsFrame out;
-    out.t = f.clock.time;
-    out.c = f.collisions_per_particle;
-    out.t_start = t_start;
-    out.c_start = c_start;
-    out.configurations = running.configurations;
-    out.shear_offset = f.shear_offset;
-    out.shear_velocity = head.metadata.boundary == "lees-edwards" ? f.shear_velocity : 0.0;
-    out.instant = fields_from_moments(instant, frame, f.shear_offset, o.subtract_shear);
-    out.average = fields_from_moments(running, frame, f.shear_offset, o.subtract_shear);
-    writer.append(out);
-  }
-  writer.finish();
+  write_fields_from_snapshots({o.snapshots, head.metadata, first, last, grid, o.subtract_shear, o.out, kVersion});
   fmt::print("fields of frames {}..{} on {} × {}{} cells written to {}\n", first, last, grid.nx, grid.ny,
              three_dimensional ? fmt::format(" × {}", grid.nz) : "", o.out);
   return 0;

@@ -10,9 +10,8 @@
 #include "app/plot/plot_command.hpp"
 #include "app/plot/plot_inputs.hpp"
 #include "io/export_field_source.hpp"
-#include "io/export_file.hpp"
+#include "io/export_series.hpp"
 #include "io/export_vtk.hpp"
-#include "io/export_xyz.hpp"
 #include "io/snapshot_file.hpp"
 #include "render/configuration_picture.hpp"
 
@@ -41,26 +40,7 @@ std::vector<std::int64_t> chosen_frames(const ExportArguments& a, std::int64_t f
   return all;
 }
 
-// `<stem>_<k>.<extension>` beside the series file (or the default name beside the input).
-std::string frame_file(const fs::path& series, std::int64_t k, const std::string& extension) {
-  return (series.parent_path() / fmt::format("{}_{}.{}", series.stem().string(), k, extension)).string();
-}
-
-// Writes one file per frame; for several frames also the .pvd collection named `series`.
-template <typename WriteFrame>
-void write_vtk_series(const fs::path& series, const std::vector<std::int64_t>& frames, const std::string& extension,
-                      WriteFrame&& write_frame) {
-  std::vector<std::pair<double, std::string>> collection;
-  for (std::int64_t k : frames) {
-    const std::string path = frames.size() == 1 ? series.string() : frame_file(series, k, extension);
-    collection.emplace_back(write_frame(k, path), fs::path(path).filename().string());
-    fmt::print("wrote {}\n", path);
-  }
-  if (frames.size() > 1) {
-    write_pvd(series.string(), collection);
-    fmt::print("wrote {}\n", series.string());
-  }
-}
+void print_written(const std::string& path) { fmt::print("wrote {}\n", path); }
 
 // Returns the exit code (that of the GSD writer for --format gsd).
 int export_particles(const ExportArguments& a, const std::string& snapshots) {
@@ -76,23 +56,11 @@ int export_particles(const ExportArguments& a, const std::string& snapshots) {
                            {snapshots, "--out", out.string(), "--frames", fmt::format("{}", fmt::join(frames, ","))});
   }
   if (xyz) {
-    StagedFile file(out.string());
-    for (std::int64_t k : frames) {
-      const SnapshotRead s = read_snapshot(snapshots, k);
-      const SystemParams& p = s.metadata.system;
-      write_xyz_frame(file.stream(), s.frame.particles,
-                      {p.diameter, p.length_x, p.length_y, s.frame.clock.time, s.frame.collisions_per_particle,
-                       s.metadata.boundary, p.shear_velocity, s.frame.shear_offset, p.length_z});
-    }
-    file.commit();
+    export_xyz_frames(snapshots, frames, out.string());
     fmt::print("wrote {} ({} frames)\n", out.string(), frames.size());
     return 0;
   }
-  write_vtk_series(out, frames, "vtp", [&](std::int64_t k, const std::string& path) {
-    const SnapshotRead s = read_snapshot(snapshots, k);
-    write_vtp_particles(path, s.frame.particles, s.metadata.system.diameter, s.frame.clock.time);
-    return s.frame.clock.time;
-  });
+  export_vtp_frames(snapshots, frames, out, print_written);
   return 0;
 }
 
@@ -130,7 +98,7 @@ void export_snapshot_fields(const ExportArguments& a, const std::string& snapsho
     }
     write_vti_fields(path, grid, arrays, s.frame.clock.time);
     return s.frame.clock.time;
-  });
+  }, print_written);
 }
 
 void export_fields(const ExportArguments& a) {
@@ -147,11 +115,7 @@ void export_fields(const ExportArguments& a) {
     export_snapshot_fields(a, source, out, frames);
     return;
   }
-  write_vtk_series(out, frames, "vti", [&](std::int64_t k, const std::string& path) {
-    const FieldFileFrame f = read_field_file_frame(source, k);
-    write_vti_fields(path, f.grid, f.arrays, f.time);
-    return f.time;
-  });
+  export_field_file_frames(source, frames, out, print_written);
 }
 
 int plot_export(const ExportArguments& a) {

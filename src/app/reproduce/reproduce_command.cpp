@@ -10,10 +10,8 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
@@ -21,10 +19,9 @@
 #include "app/plot/plot_inputs.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
-#include "io/timeseries_csv.hpp"
 #include "reproduce/report.hpp"
+#include "reproduce/study_runs.hpp"
 #include "sweep/point_runs.hpp"
-#include "sweep/results_table.hpp"
 #include "sweep/sweep_directory.hpp"
 #ifdef GRANULE_HAVE_MPI
 #include "sweep/mpi_points.hpp"
@@ -66,28 +63,6 @@ Scale parse_scale(const std::string& text) {
   throw CommandFailure{kExitBadInput, fmt::format("--scale {}: allowed small, medium, thesis (tiny: for the tests)", text)};
 }
 
-// One run group of a study: its sweep spec and directory.
-struct GroupRun {
-  const Study* study;
-  std::string group;
-  sweep::SweepSpec spec;
-  sweep::SweepDirectory dir;
-};
-
-std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, Scale scale, const fs::path& out) {
-  std::vector<GroupRun> groups;
-  for (const Study* study : studies) {
-    for (const RunGroup& g : study->runs(scale)) {
-      sweep::SweepSpecResult parsed = sweep::parse_sweep_spec(g.sweep_toml);
-      // The catalogue's own specs: a refusal is a bug of the study, not the user's input.
-      if (!parsed.spec) throw std::logic_error(fmt::format("{}/{}: {}", study->name, g.name, parsed.error));
-      groups.push_back({study, g.name, std::move(*parsed.spec), sweep::SweepDirectory{out / "runs" / study->name / g.name}});
-    }
-  }
-  return groups;
-}
-
-
 // Runs all points of one group: K at a time locally, or over the MPI ranks.
 using GroupRunner = std::function<void(const sweep::SweepRun&)>;
 
@@ -107,29 +82,6 @@ bool run_groups(const std::vector<GroupRun>& groups, const GroupRunner& run_all,
     done += g.spec.points.size();
   }
   return InterruptSignals::received() == 0;
-}
-
-GroupOutputs read_group(const GroupRun& g, std::string& tally_line, bool& complete, double& run_seconds) {
-  const sweep::SweepTally tally = sweep::write_results(g.dir, g.spec);
-  complete = complete && tally.complete();
-  tally_line = fmt::format("{}/{}: {}", g.study->name, g.group, sweep::tally_line(tally, g.dir));
-  GroupOutputs outputs;
-  for (const sweep::SweepPoint& point : g.spec.points) {
-    PointOutputs p;
-    p.name = point.name;
-    p.directory = g.dir.run(point).string();
-    const sweep::PointRecord record = sweep::current_record(g.dir, point);
-    p.status = record.status;
-    run_seconds += record.seconds;
-    for (const sweep::PointSetting& s : point.settings) p.settings.emplace_back(s.key, s.readable);
-    const fs::path run = g.dir.run(point);
-    if (fs::exists(run / "timeseries.csv")) p.samples = read_timeseries((run / "timeseries.csv").string());
-    std::ifstream summary(run / "summary.json");
-    if (summary) p.summary = nlohmann::json::parse(summary, nullptr, false);
-    if (p.summary.is_discarded()) p.summary = nullptr;
-    outputs.push_back(std::move(p));
-  }
-  return outputs;
 }
 
 // The study's analyses of every usable point of the group, each once (its output tells).  A failed
@@ -155,15 +107,6 @@ void run_point_analyses(const Study& study, Scale scale, const GroupRun& g, cons
   }
 }
 
-nlohmann::json figure_json(const Figure& f) {
-  nlohmann::json series = nlohmann::json::array();
-  for (const FigureSeries& s : f.series) {
-    series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}, {"error", s.error}, {"line", s.line}});
-  }
-  return {{"title", f.thesis_figure}, {"x_label", f.x_label}, {"y_label", f.y_label},
-          {"log_x", f.log_x},         {"log_y", f.log_y},     {"series", series}};
-}
-
 // figures/<name>.json (the numbers drawn) and figures/<name>.png; a figure that fails to draw is
 // reported and left out of the report's pictures, not fatal.
 void draw_figures(const fs::path& out, const StudyOutcome& outcome) {
@@ -171,8 +114,7 @@ void draw_figures(const fs::path& out, const StudyOutcome& outcome) {
   std::fflush(stdout);  // our lines before the script's messages
   for (const Figure& f : outcome.figures) {
     const fs::path data = out / "figures" / (f.name + ".json"), picture = out / "figures" / (f.name + ".png");
-    // NaN is not JSON: nlohmann writes it as null, which the script reads as a missing point.
-    write_file_atomically(data.string(), figure_json(f).dump() + "\n");
+    write_file_atomically(data.string(), figure_json(f));
     if (run_plot_script("reproduce_figure", {data.string(), "--out", picture.string()}) != 0) {
       fmt::print(stderr, "granule reproduce: warning: figure {} was not drawn\n", f.name);
     }
@@ -196,10 +138,12 @@ int report(const std::vector<const Study*>& studies, const std::vector<GroupRun>
     StudyOutputs outputs;
     for (const GroupRun& g : groups) {
       if (g.study != study) continue;
-      std::string line;
-      outputs[g.group] = read_group(g, line, complete, r.run_seconds);
+      GroupReading reading = read_group(g);
+      complete = complete && reading.complete;
+      r.run_seconds += reading.run_seconds;
+      outputs[g.group] = std::move(reading.outputs);
       run_point_analyses(*study, scale, g, outputs[g.group]);
-      section.run_lines.push_back(line);
+      section.run_lines.push_back(reading.tally_line);
     }
     fmt::print("reproduce: analysing {}\n", study->name);
     try {

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -13,17 +14,15 @@
 
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
-#include "app/run/output_directory.hpp"
 #include "app/plot/plot_run_picture.hpp"
 #include "app/run/run_console.hpp"
+#include "driver/run_directory.hpp"
 #include "driver/run_session.hpp"
 #include "driver/run_start.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
-#include "io/fields_file.hpp"
 #include "io/io_error.hpp"
 #include "io/snapshot_file.hpp"
-#include "io/timeseries_csv.hpp"
 
 namespace granule::app {
 
@@ -40,6 +39,29 @@ struct RunOptions {
   std::optional<std::int64_t> from_frame;
   bool force = false;
 };
+
+// The first `--set` key outside run.*, output.* and `also_allowed`, or "" (a resumed run keeps
+// its physics).
+std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed) {
+  for (const std::string& assignment : overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    const bool allowed = key.rfind("run.", 0) == 0 || key.rfind("output.", 0) == 0 ||
+                         std::find(also_allowed.begin(), also_allowed.end(), key) != also_allowed.end();
+    if (!allowed) return key;
+  }
+  return {};
+}
+
+// Refuses (exit 5) a run whose estimated peak memory exceeds what the machine has available.
+void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
+  const double needed = driver::estimated_run_bytes(config, grid);
+  const double available = driver::available_memory_bytes();
+  if (available > 0.0 && needed > available) {
+    throw CommandFailure{kExitOutOfMemory,
+                         fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
+                                     config.system.particles, needed / (1 << 30), available / (1 << 30))};
+  }
+}
 
 // With --from-frame the run takes another branch from an earlier state, so the TC model may be
 // switched on (the way out of an inelastic collapse); nothing else of the physics may change.
@@ -77,7 +99,11 @@ std::unique_ptr<RunSession<D>> new_session(const RunConfig& config, const CellGr
   const std::string& out = options.out_dir;
   check_memory_for_run(config, grid);
   const driver::RunStart start = or_bad_input([&] { return driver::run_start(config); });
-  prepare_new_output_directory(out, options.force);
+  try {
+    driver::prepare_new_output_directory(out, options.force);
+  } catch (const driver::RunDirectoryRefused& refused) {
+    throw CommandFailure{kExitBadInput, refused.what()};
+  }
   write_file_atomically(out + "/config.toml", to_toml(config));
   return std::make_unique<RunSession<D>>(config, grid, out, start);
 }
@@ -98,25 +124,17 @@ std::unique_ptr<RunSession<D>> resumed_session(const RunConfig& config, const Ce
       throw CommandFailure{kExitBadInput, fmt::format("cannot resume {}: {}", out, error.what())};
     }
   }();
-  remove_end_of_run_outputs(out);
+  driver::remove_end_of_run_outputs(out);
   write_file_atomically(out + "/config.toml", to_toml(config));
   const Simulation<D>& sim = session->simulation();
   fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, sim.time(), sim.collisions_per_particle());
   return session;
 }
 
-// The first of `names` that exists in `out`, as published or partial file ("" if none).
-std::string existing_output(const std::string& out, const std::string& name) {
-  for (const char* suffix : {"", ".partial"}) {
-    if (std::filesystem::exists(out + "/" + name + suffix)) return out + "/" + name + suffix;
-  }
-  return {};
-}
-
 template <int D>
 std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const CellGrid& grid, const std::string& out,
                                                std::int64_t frame) {
-  const std::string snapshots = existing_output(out, "snapshots.h5");
+  const std::string snapshots = driver::existing_run_output(out, "snapshots.h5");
   SnapshotRead read;
   try {
     if (snapshots.empty()) throw std::runtime_error("the run has no snapshot file");
@@ -131,26 +149,14 @@ std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const
   const std::int64_t k = frame < 0 ? read.frames + frame : frame;
   check_memory_for_run(config, grid);
   // Everything the run wrote moves aside; frames and rows up to frame K come back.
-  const std::string aside = set_aside_run_outputs(out, k);
+  const double c = read.frame.collisions_per_particle;
+  driver::BranchedOutputs branched = driver::branch_run_outputs(out, k, c, config.fields.enabled);
+  const std::string& aside = branched.aside;
   typename RunSession<D>::FrameStart start;
   start.frame = read.frame;
   start.snapshot_frames = k + 1;
-  const std::string from_snapshots = existing_output(aside, "snapshots.h5");
-  std::filesystem::copy_file(from_snapshots, out + "/snapshots.h5.partial");
-  const double c = read.frame.collisions_per_particle;
-  if (const std::string rows = existing_output(aside, "timeseries.csv"); !rows.empty()) {
-    for (const DiagnosticsSample& sample : read_timeseries(rows)) {
-      if (sample.c <= c) start.samples.push_back(sample);
-    }
-  }
-  if (const std::string fields = existing_output(aside, "fields.h5"); !fields.empty() && config.fields.enabled) {
-    for (const double frame_c : read_fields_frame_c(fields)) {
-      if (frame_c > c) break;
-      ++start.kept.fields_frames;
-      start.kept.fields_frame_at_start = frame_c == c;
-    }
-    std::filesystem::copy_file(fields, out + "/fields.h5.partial");
-  }
+  start.samples = std::move(branched.samples);
+  start.kept = branched.kept;
   write_file_atomically(out + "/config.toml", to_toml(config));
   auto session = std::make_unique<RunSession<D>>(config, grid, out, start);
   fmt::print("continuing {} from frame {} (t = {:.6g}, c = {:.6g}); the later outputs are in {}\n", out, k,

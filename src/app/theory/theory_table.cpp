@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 
 #include "app/theory/theory_checks.hpp"
 
 namespace granule::app {
 
-void print_table(const CLI::App& command, const Table& table, bool csv) {
+void print_table(const CLI::App& command, const theory::PredictionTable& table, bool csv) {
+  theory_checks::require_finite(command, table.derived_names, table.derived);
   for (const auto& row : table.rows) theory_checks::require_finite(command, table.columns, row);
   if (csv) {
     std::string line;
@@ -43,20 +43,6 @@ void print_table(const CLI::App& command, const Table& table, bool csv) {
     }
     fmt::print("{}\n", line);
   }
-}
-
-std::vector<double> linspace(double lo, double hi, int points) {
-  std::vector<double> out;
-  for (int j = 0; j < points; ++j) {
-    out.push_back(points == 1 ? lo : lo + (hi - lo) * j / (points - 1));
-  }
-  return out;
-}
-
-std::vector<double> logspace(double lo, double hi, int points) {
-  std::vector<double> out;
-  for (double x : linspace(std::log(lo), std::log(hi), points)) out.push_back(std::exp(x));
-  return out;
 }
 
 }  // namespace granule::app

@@ -1,27 +1,15 @@
-// The output of the `granule theory` subcommands: tables of numbers, and the grids they are
-// evaluated on.
+// How the `granule theory` subcommands print a prediction (theory/prediction_table.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <string>
-#include <vector>
+
+#include "theory/prediction_table.hpp"
 
 namespace granule::app {
 
-// A table of numbers with named columns, printed aligned (with `# ` summary lines above it) or as
-// CSV (header and rows only, so that any CSV reader takes it).
-struct Table {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::vector<std::string> summary;
-};
-
-// Refuses (exit 2) a table holding an infinite or NaN value, before printing anything.
-void print_table(const CLI::App& command, const Table& table, bool csv);
-
-// Evenly spaced values from lo to hi inclusive (one value when points == 1).
-std::vector<double> linspace(double lo, double hi, int points);
-// The same, evenly spaced in log (lo, hi > 0).
-std::vector<double> logspace(double lo, double hi, int points);
+// Aligned columns with `# ` summary lines above them, or CSV (header and rows only, so that any
+// CSV reader takes it).  Refuses (exit 2) a table whose derived values or rows hold an infinite
+// or NaN value, before printing anything.
+void print_table(const CLI::App& command, const theory::PredictionTable& table, bool csv);
 
 }  // namespace granule::app

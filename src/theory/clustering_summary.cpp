@@ -1,12 +1,12 @@
-#include "app/theory/theory_clustering_lines.hpp"
+#include "theory/clustering_summary.hpp"
 
 #include <fmt/format.h>
 
 #include <numbers>
 
-namespace granule::app {
+namespace granule::theory {
 
-std::vector<std::string> clustering_lines(const theory::ClusteringScales& scales, double k,
+std::vector<std::string> clustering_lines(const ClusteringScales& scales, double k,
                                           double mean_free_path, double diameter,
                                           double box_length) {
   const double kl = k * mean_free_path;
@@ -32,4 +32,4 @@ std::vector<std::string> clustering_lines(const theory::ClusteringScales& scales
                   longest / box_length, w.open() ? "" : " (bounds crossed)")};
 }
 
-}  // namespace granule::app
+}  // namespace granule::theory

@@ -1,17 +1,18 @@
-#include "app/run/output_directory.hpp"
+#include "driver/run_directory.hpp"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <vector>
 
-#include "app/exit_codes.hpp"
+#include "io/fields_file.hpp"
 #include "io/io_error.hpp"
 #include "io/journaled_file_driver.hpp"
+#include "io/timeseries_csv.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 namespace fs = std::filesystem;
 
@@ -35,8 +36,9 @@ void remove_outputs(const std::string& out, const std::vector<std::string>& name
   }
 }
 
-// Available memory: /proc/meminfo's MemAvailable, or the cgroup limit if that is smaller.
-double available_bytes() {
+}  // namespace
+
+double available_memory_bytes() {
   double available = 0.0;
   std::ifstream meminfo("/proc/meminfo");
   for (std::string key; meminfo >> key;) {
@@ -51,19 +53,17 @@ double available_bytes() {
   return available;
 }
 
-}  // namespace
-
 void prepare_new_output_directory(const std::string& out, bool force) {
   std::error_code error;
   const fs::file_status status = fs::status(out, error);
   if (fs::exists(status) && !fs::is_directory(status)) {
-    throw CommandFailure{kExitBadInput, fmt::format("--out {} exists and is not a directory", out)};
+    throw RunDirectoryRefused(fmt::format("--out {} exists and is not a directory", out));
   }
   if (fs::is_directory(status) && !fs::is_empty(out, error)) {
     if (!force) {
-      throw CommandFailure{kExitBadInput,
-                           fmt::format("--out {} already holds files; give another directory, --force to replace the "
-                                       "outputs of the run in it, or --resume {} to continue that run", out, out)};
+      throw RunDirectoryRefused(fmt::format("--out {} already holds files; give another directory, --force to replace "
+                                            "the outputs of the run in it, or --resume {} to continue that run",
+                                            out, out));
     }
     remove_outputs(out, run_output_names());
   }
@@ -106,17 +106,34 @@ std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
   return aside.string();
 }
 
-std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed) {
-  for (const std::string& assignment : overrides) {
-    const std::string key = assignment.substr(0, assignment.find('='));
-    const bool allowed = key.rfind("run.", 0) == 0 || key.rfind("output.", 0) == 0 ||
-                         std::find(also_allowed.begin(), also_allowed.end(), key) != also_allowed.end();
-    if (!allowed) return key;
+std::string existing_run_output(const std::string& out, const std::string& name) {
+  for (const char* suffix : {"", ".partial"}) {
+    if (fs::exists(out + "/" + name + suffix)) return out + "/" + name + suffix;
   }
   return {};
 }
 
-void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
+BranchedOutputs branch_run_outputs(const std::string& out, std::int64_t frame, double c, bool fields) {
+  BranchedOutputs branched;
+  branched.aside = set_aside_run_outputs(out, frame);
+  fs::copy_file(existing_run_output(branched.aside, "snapshots.h5"), out + "/snapshots.h5.partial");
+  if (const std::string rows = existing_run_output(branched.aside, "timeseries.csv"); !rows.empty()) {
+    for (const DiagnosticsSample& sample : read_timeseries(rows)) {
+      if (sample.c <= c) branched.samples.push_back(sample);
+    }
+  }
+  if (const std::string fields_file = existing_run_output(branched.aside, "fields.h5"); !fields_file.empty() && fields) {
+    for (const double frame_c : read_fields_frame_c(fields_file)) {
+      if (frame_c > c) break;
+      ++branched.kept.fields_frames;
+      branched.kept.fields_frame_at_start = frame_c == c;
+    }
+    fs::copy_file(fields_file, out + "/fields.h5.partial");
+  }
+  return branched;
+}
+
+double estimated_run_bytes(const RunConfig& config, const CellGrid& grid) {
   // Measured peaks (granule bench, /usr/bin/time, heaptrack; docs/performance.md): the engine
   // ~95 B per disk and ~111 per sphere, +8 with the TC model, +16 polydisperse, +8 (+24) for
   // spinning disks (spheres); beside it, at most the positions and cell binning of the flow
@@ -133,13 +150,7 @@ void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
   const auto n = static_cast<double>(s.particles);
   const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
                              static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
-  const double needed = per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
-  const double available = available_bytes();
-  if (available > 0.0 && needed > available) {
-    throw CommandFailure{kExitOutOfMemory,
-                         fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
-                                     config.system.particles, needed / (1 << 30), available / (1 << 30))};
-  }
+  return per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
 }
 
-}  // namespace granule::app
+}  // namespace granule::driver

@@ -1,0 +1,27 @@
+// A prediction of the thesis's kinetic theory as a table of numbers, as `granule theory` prints it
+// (built here, below the command line, so that any caller can have it), and the grids it is
+// evaluated on.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace granule::theory {
+
+// Named columns and rows of numbers, with summary lines of text (the inputs and the scalar
+// results the table rests on).  `derived_names`/`derived` are those scalar results, one value
+// per name, for a caller to refuse a prediction whose inputs combine beyond double precision.
+struct PredictionTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> summary;
+  std::vector<std::string> derived_names;
+  std::vector<double> derived;
+};
+
+// Evenly spaced values from lo to hi inclusive (one value when points == 1).
+std::vector<double> linspace(double lo, double hi, int points);
+// The same, evenly spaced in log (lo, hi > 0).
+std::vector<double> logspace(double lo, double hi, int points);
+
+}  // namespace granule::theory
