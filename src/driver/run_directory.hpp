@@ -11,7 +11,7 @@
 #include "cells/cell_grid.hpp"
 #include "io/config.hpp"
 #include "observers/global_diagnostics.hpp"
-#include "observers/observable.hpp"
+#include "observables/observable.hpp"
 
 namespace granule::driver {
 
