@@ -61,13 +61,6 @@ class Motion {
       for (int a = 0; a < D; ++a) flight.advance_base(a, r[a], v[a], t);
     });
   }
-  // The field's components (zero for ballistic flight), for checkpoints and reports.
-  std::array<double, 3> acceleration() const {
-    std::array<double, 3> g{};
-    for (int a = 0; a < D; ++a) g[static_cast<std::size_t>(a)] = 2.0 * visit([&](const auto& f) { return f.half_acceleration(a); });
-    return g;
-  }
-
  private:
   bool in_field_ = false;
   UniformField<D> field_;
