@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
 packages=(cmake ninja-build g++ libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
-          libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libhdf5-dev hdf5-tools libeigen3-dev libboost-dev
+          libtomlplusplus-dev nlohmann-json3-dev libxxhash-dev libfmt-dev libhdf5-dev hdf5-tools libeigen3-dev libboost-dev
           python3-h5py python3-numpy python3-scipy python3-matplotlib pkg-config libcairo2-dev
           ffmpeg python3-vtk9 libopenmpi-dev openmpi-bin pybind11-dev python3-pybind11 python3-dev python3-gsd
           python3-pytest)

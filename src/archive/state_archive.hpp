@@ -86,11 +86,19 @@ class StateArchive {
   }
   double scalar(const std::string& name) const { return single(get<double>(name), name); }
   std::int64_t integer(const std::string& name) const { return single(get<std::int64_t>(name), name); }
+  // A single integer that counts something (frames, collisions): never negative.
+  std::int64_t count(const std::string& name) const {
+    const std::int64_t value = integer(name);
+    if (value < 0) throw std::runtime_error("checkpoint entry " + name + " is " + std::to_string(value) + ", not a count");
+    return value;
+  }
   bool contains(const std::string& name) const { return arrays_.count(name) > 0 || deferred_.count(name) > 0; }
   std::vector<std::vector<double>> rows(const std::string& name) const {
     const auto& flat = get<double>(name);
     const std::int64_t count = integer(name + "_rows");
-    if (count < 0 || (count == 0 ? !flat.empty() : flat.size() % static_cast<std::size_t>(count) != 0)) {
+    // Rows of at least one entry (a row count larger than the entries would come from a damaged file).
+    if (count < 0 || static_cast<std::uint64_t>(count) > flat.size() ||
+        (count == 0 ? !flat.empty() : flat.size() % static_cast<std::size_t>(count) != 0)) {
       throw std::runtime_error("checkpoint entry " + name + " does not hold whole rows");
     }
     const std::size_t length = count == 0 ? 0 : flat.size() / static_cast<std::size_t>(count);

@@ -1,10 +1,22 @@
 #include "driver/run_lifecycle.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
 #include <map>
 #include <string_view>
 #include <utility>
 
+#include "io/config_compare.hpp"
+#include "io/io_error.hpp"
+
 namespace granule::driver {
+
+namespace {
+// The run's resolved configuration (to_toml), as bytes: a resume compares it with its own.
+constexpr const char* kConfigEntry = "run/config";
+}  // namespace
 
 FieldGrid diagnostics_grid(const RunConfig& config) {
   const SystemParams& s = config.system;
@@ -29,9 +41,13 @@ template <int D>
 RunLifecycle<D>::RunLifecycle(const RunConfig& config, const CellGrid& grid, const StateArchive& checkpoint,
                               std::string out_dir)
     : config_(config), out_dir_(std::move(out_dir)) {
-  sim_ = std::make_unique<Simulation<D>>(config.system, grid, checkpoint, "engine/");
-  equilibrate_collisions_ = checkpoint.integer("run/equilibrate_collisions");
-  if (checkpoint.integer("run/in_production") != 0) restore_production(checkpoint);
+  check_same_physics(checkpoint);
+  // The engine checks the checkpoint against the parameters the run has at it: the elastic
+  // pre-run's until production starts.
+  const bool production = checkpoint.integer("run/in_production") != 0;
+  sim_ = std::make_unique<Simulation<D>>(production ? config.system : elastic_prerun(config.system), grid, checkpoint, "engine/");
+  equilibrate_collisions_ = checkpoint.count("run/equilibrate_collisions");
+  if (production) restore_production(checkpoint);
 }
 
 template <int D>
@@ -44,6 +60,16 @@ RunLifecycle<D>::RunLifecycle(const RunConfig& config, const CellGrid& grid, con
   sampling_.advance(*sim_);
   measurements_ = std::make_unique<RunMeasurements<D>>(config_, *out_dir_);
   measurements_->continue_from_frame(*sim_, kept);
+}
+
+template <int D>
+void RunLifecycle<D>::check_same_physics(const StateArchive& checkpoint) const {
+  const std::vector<std::uint8_t>& saved = checkpoint.get<std::uint8_t>(kConfigEntry);
+  const std::vector<std::string> differences = physics_differences(std::string(saved.begin(), saved.end()), to_toml(config_));
+  if (differences.empty()) return;
+  std::string text = "the configuration is not the one the checkpoint was written with (only run.* and output.* may change):";
+  for (const std::string& difference : differences) text += "\n  " + difference;
+  throw InputError(text);
 }
 
 template <int D>
@@ -83,6 +109,16 @@ void RunLifecycle<D>::restore_production(const StateArchive& archive) {
       });
     }
   });
+  // The rows of the time series the run continues: taken at finite, increasing t and c, none after now.
+  for (std::size_t k = 0; k < rows; ++k) {
+    const DiagnosticsSample& row = samples_[k];
+    const bool ordered = k == 0 || (row.t >= samples_[k - 1].t && row.c >= samples_[k - 1].c);
+    if (!std::isfinite(row.t) || !std::isfinite(row.c) || !ordered || row.t > sim_->time()) {
+      throw InputError(fmt::format("checkpoint entries run/samples: row {} has t = {}, c = {}; expected finite times and "
+                                   "collision counts, increasing, none after the checkpoint's t = {}",
+                                   k, row.t, row.c, sim_->time()));
+    }
+  }
   sampling_ = Schedule{config_.sample_every_collisions_per_particle, config_.sample_every_time};
   sampling_.start(config_.system.particles);
   sampling_.restore(archive, "run/sampling/", *sim_);
@@ -93,6 +129,8 @@ void RunLifecycle<D>::restore_production(const StateArchive& archive) {
 template <int D>
 void RunLifecycle<D>::save(StateArchive& archive) const {
   sim_->save(archive, "engine/");
+  const std::string toml = to_toml(config_);
+  archive.put(kConfigEntry, std::vector<std::uint8_t>(toml.begin(), toml.end()));
   archive.put_integer("run/equilibrate_collisions", equilibrate_collisions_);
   archive.put_integer("run/in_production", in_production() ? 1 : 0);
   if (!in_production()) return;

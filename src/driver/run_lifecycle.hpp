@@ -71,6 +71,9 @@ class RunLifecycle final : public StopClient<D> {
 
  private:
   void start_production();
+  // Refuses (InputError, listing the keys) a configuration whose physics differs from the one
+  // recorded in the checkpoint.
+  void check_same_physics(const StateArchive& checkpoint) const;
   void attach_diagnostics();
   void take_sample();
   void restore_production(const StateArchive& archive);

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <filesystem>
 #include <map>
 #include <string_view>
@@ -24,7 +26,11 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
 template <int D>
 RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::string out, const StateArchive& checkpoint)
     : config_(config), grid_(grid), out_(std::move(out)), run_(config, grid, checkpoint, out_), sim_(run_.engine()) {
+  has_checkpoint_ = true;
   earlier_wall_seconds_ = checkpoint.scalar("run/wall_seconds");
+  if (!(earlier_wall_seconds_ >= 0.0 && std::isfinite(earlier_wall_seconds_))) {
+    throw std::runtime_error("checkpoint entry run/wall_seconds is not a duration");
+  }
   segment_start_collisions_ = sim_.collisions();
   until_collisions_ = collisions_for(config, config.until_collisions_per_particle);
   until_time_ = config.until_time.value_or(kInf);
@@ -33,7 +39,7 @@ RunSession<D>::RunSession(const RunConfig& config, const CellGrid& grid, std::st
   snapshotting_.start(config.system.particles);
   snapshotting_.restore(checkpoint, "run/snapshotting/", sim_);
   // A run extended past its old end has new run.* limits: the schedules continue regardless.
-  snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", checkpoint.integer("run/snapshot_frames"));
+  snapshots_ = std::make_unique<SnapshotWriter>(out_ + "/snapshots.h5", checkpoint.count("run/snapshot_frames"));
   last_snapshot_events_ = checkpoint.integer("run/last_snapshot_events");
   // What the interrupted segment wrote after its checkpoint is not part of this run any more.
   write_timeseries();
@@ -91,6 +97,7 @@ void RunSession<D>::write_checkpoint() {
   if (in_production()) write_timeseries();  // the rows on disk include every row of the checkpoint
   granule::write_checkpoint(out_ + "/checkpoint.h5", archive, kVersion);
   last_checkpoint_wall_ = progress_.seconds_since_start();
+  has_checkpoint_ = true;
 }
 
 template <int D>
@@ -132,6 +139,8 @@ void RunSession<D>::report_progress() {
 template <int D>
 StopReason RunSession<D>::run(const volatile std::sig_atomic_t* interrupt) {
   sim_.set_interrupt_flag(interrupt);
+  // A run killed at any moment can be resumed: its first checkpoint holds the initial state.
+  if (!has_checkpoint_) write_checkpoint();
   const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);  // progress granularity
   while (true) {
     StopReason reason;

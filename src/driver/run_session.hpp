@@ -85,6 +85,7 @@ class RunSession final : public StopClient<D> {
   std::int64_t segment_start_collisions_ = 0;
   std::int64_t segment_prerun_collisions_ = 0;  // executed by this invocation before production
   double last_checkpoint_wall_ = 0.0;
+  bool has_checkpoint_ = false;  // a new run writes its first checkpoint before its first event
   double last_csv_wall_ = 0.0;
 };
 

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "archive/state_archive.hpp"
@@ -49,6 +51,9 @@ class CollapseDetector {
     count_ = archive.integer(prefix + "count");
     start_ = archive.scalar(prefix + "start");
     longest_ = archive.scalar(prefix + "longest");
+    if (window_ < 1 || count_ < 0 || !std::isfinite(start_) || !(std::isfinite(longest_) && longest_ >= -1.0)) {
+      throw std::runtime_error("checkpoint entries " + prefix + "*: the collapse detector's window, count or times are not of a run");
+    }
   }
 
  private:

@@ -155,6 +155,7 @@ class Simulation {
   void renumber();
   // The numbering a checkpoint holds (the user's when it holds none), and the cadence.
   void restore_numbering(const StateArchive& archive, const std::string& prefix);
+  void check_restored_clocks() const;
   // Engine numbers equal to the user's ids, stored (the start of a renumbering engine).
   void number_by_user_id() {
     user_id_.resize(particles_.size());

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "engine/simulation.hpp"
 
@@ -13,8 +14,21 @@ namespace granule {
 
 namespace {
 
-// The parameters a checkpoint must agree with (the restitution is restored: during the elastic
-// pre-run it is 1, not the configured value).
+// The restitutions a checkpoint records (elastic during the pre-run), by name and reference.
+template <typename Params, typename Visit>
+void visit_restitutions(Params& p, int dimension, Visit&& visit) {
+  visit("restitution", p.restitution);
+  if (p.roughness.rough) visit("tangential_restitution", p.roughness.tangential_restitution);
+  for (int face = 0; face < 2 * dimension; ++face) {
+    if (!p.walls[static_cast<std::size_t>(face / 2)]) continue;
+    auto& wall = p.wall[static_cast<std::size_t>(face)];
+    visit("wall_" + std::to_string(face) + "_restitution", wall.restitution);
+    visit("wall_" + std::to_string(face) + "_tangential_restitution", wall.tangential_restitution);
+  }
+}
+
+// The parameters a checkpoint must agree with: those the run has at the checkpoint, which the
+// caller gives (during the elastic pre-run every restitution is elastic, elastic_prerun).
 void check_matches(const StateArchive& archive, const std::string& prefix, const SystemParams& p, const CellGrid& g,
                    int dimension) {
   const auto expect = [&](const char* name, double value) {
@@ -34,6 +48,7 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
   expect("grid_width", g.width);
   expect("grid_height", g.height);
   expect("grid_strain_period", g.strain_period);
+  visit_restitutions(p, dimension, [&](const std::string& name, double value) { expect(name.c_str(), value); });
   if (dimension == 3) {
     expect("length_z", p.length_z);
     expect("grid_nz", g.nz);
@@ -62,19 +77,6 @@ std::map<std::string, double> surface_parameters(const SystemParams& p, int dime
     for (int a = 0; a < dimension; ++a) out[std::string("gravity_") + "xyz"[a]] = p.gravity[static_cast<std::size_t>(a)];
   }
   return out;
-}
-
-// The restitutions a checkpoint restores (elastic during the pre-run), by name and reference.
-template <typename Params, typename Visit>
-void visit_restitutions(Params& p, int dimension, Visit&& visit) {
-  visit("restitution", p.restitution);
-  if (p.roughness.rough) visit("tangential_restitution", p.roughness.tangential_restitution);
-  for (int face = 0; face < 2 * dimension; ++face) {
-    if (!p.walls[static_cast<std::size_t>(face / 2)]) continue;
-    auto& wall = p.wall[static_cast<std::size_t>(face)];
-    visit("wall_" + std::to_string(face) + "_restitution", wall.restitution);
-    visit("wall_" + std::to_string(face) + "_tangential_restitution", wall.tangential_restitution);
-  }
 }
 
 void check_surfaces_match(const StateArchive& archive, const std::string& prefix, const SystemParams& p, int dimension) {
@@ -225,7 +227,6 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
-  visit_restitutions(params_, D, [&](const std::string& name, double& value) { value = archive.scalar(prefix + name); });
   set_walls(params_.wall);
   const auto n = static_cast<std::size_t>(params.particles);
   particles_.assign(n, ParticleRecord<D>{});
@@ -256,6 +257,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       value.assign(loaded.begin(), loaded.end());
     }
   });
+  check_restored_clocks();
   shear_rate_ = image_velocity() / params.length_y;
   protocol_running_ = archive.integer(prefix + "protocol_running") != 0;
   actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
@@ -281,6 +283,31 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     check_invariants();
   } catch (const std::logic_error& error) {
     throw std::runtime_error(std::string("checkpoint fails the engine's invariants: ") + error.what());
+  }
+}
+
+// Clocks and counters before anything runs on them: a NaN clock would stall the event loop, a
+// negative count would be reported as collisions.
+template <int D>
+void Simulation<D>::check_restored_clocks() const {
+  const auto refuse = [](const std::string& what) { throw std::runtime_error("checkpoint entry " + what); };
+  const std::pair<const char*, double> clocks[] = {{"t_now", t_now_}, {"clock_base", clock_base_}, {"t_ref", t_ref_},
+                                                   {"strain_at_reference", strain_ref_}, {"image_velocity", image_velocity()}};
+  for (const auto& [name, value] : clocks) {
+    if (!std::isfinite(value)) refuse(std::string(name) + " is not finite");
+  }
+  if (t_now_ < 0.0 || clock_base_ < 0.0) refuse("t_now or clock_base is negative: time runs from 0");
+  if (std::isnan(segment_end_)) refuse("shear_segment_end is not a number");
+  if (collisions_ < 0 || events_ < collisions_ || events_since_rebase_ < 0) {
+    refuse("collisions, events or events_since_rebase is not a count of this run's events");
+  }
+  for (const double t : last_collision_) {
+    if (std::isnan(t) || t == INFINITY) refuse("last_collision holds a time that is not in the past");
+  }
+  for (std::size_t i = 0; i < diameter_.size(); ++i) {
+    if (!(diameter_[i] > 0.0 && diameter_[i] <= params_.diameter) || !(mass_[i] > 0.0 && std::isfinite(mass_[i]))) {
+      refuse("particle_diameter or particle_mass holds a size outside (0, diameter] or a mass that is not positive");
+    }
   }
 }
 

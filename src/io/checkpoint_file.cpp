@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <xxhash.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <type_traits>
 
 #include "io/hdf5_util.hpp"
+#include "io/io_error.hpp"
 
 namespace granule {
 
@@ -23,7 +27,37 @@ constexpr const char* kFormat = "granule-checkpoint";
 // 3: the particle records hold false positions at the clock base and no local time, and the
 // collision candidate's time is computed again rather than stored (engine/particle_record.hpp); a
 // version-2 checkpoint cannot continue its run bit for bit.
-constexpr int kFormatVersion = 3;
+// 4: every dataset carries the digest of its values (kDigest), and a checkpoint without them is
+// not trusted.
+constexpr int kFormatVersion = 4;
+// The attribute of each dataset that holds XXH3-64 of its values' little-endian bytes: a
+// checkpoint is trusted only when every dataset's values still give their digest.
+constexpr const char* kDigest = "xxh3_64";
+
+// XXH3-64 of bytes given piece by piece (a streamed entry is written block by block).
+class Digest {
+ public:
+  Digest() : state_(XXH3_createState()) {
+    if (state_ == nullptr || XXH3_64bits_reset(state_) != XXH_OK) throw std::bad_alloc();
+  }
+  ~Digest() { XXH3_freeState(state_); }
+  Digest(const Digest&) = delete;
+  Digest& operator=(const Digest&) = delete;
+  template <typename T>
+  void add(std::span<const T> values) {
+    if (!values.empty()) XXH3_64bits_update(state_, values.data(), values.size_bytes());
+  }
+  std::uint64_t value() const { return XXH3_64bits_digest(state_); }
+
+ private:
+  XXH3_state_t* state_;
+};
+
+void write_digest(hid_t dataset, const Digest& digest, const std::string& name) {
+  const std::uint64_t value = digest.value();
+  check(H5Aexists(dataset, kDigest) < 0 ? -1 : 0, dataset, "look for the digest of", name.c_str());
+  write_attribute(dataset, kDigest, H5T_STD_U64LE, &value);
+}
 
 // The HDF5 file type of each element type an archive can hold (little-endian, fixed size).
 template <typename T>
@@ -52,6 +86,9 @@ void write_entry(hid_t file, const std::string& name, const std::vector<T>& valu
   if (!values.empty()) {
     check(H5Dwrite(dataset.get(), file_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), file, "write", name.c_str());
   }
+  Digest digest;
+  digest.add(std::span<const T>(values));
+  write_digest(dataset.get(), digest, name);
   dataset.close();
 }
 
@@ -64,6 +101,7 @@ void write_entry(hid_t file, const std::string& name, const StateArchive::Produc
   const hsize_t size = producer.size;
   const Handle file_space = owned(H5Screate_simple(1, &size, nullptr), H5Sclose, file, "create the shape of", name.c_str());
   std::vector<T> block(std::min(producer.size, kStreamBlock));
+  Digest digest;
   for (std::size_t first = 0; first < producer.size; first += block.size()) {
     const std::size_t count = std::min(block.size(), producer.size - first);
     producer.fill(first, std::span<T>(block.data(), count));
@@ -74,42 +112,60 @@ void write_entry(hid_t file, const std::string& name, const StateArchive::Produc
     const Handle memory_space = owned(H5Screate_simple(1, &length, nullptr), H5Sclose, file, "create the shape of", name.c_str());
     check(H5Dwrite(dataset.get(), file_type<T>(), memory_space.get(), file_space.get(), H5P_DEFAULT, block.data()), file,
           "write", name.c_str());
+    digest.add(std::span<const T>(block.data(), count));
   }
+  write_digest(dataset.get(), digest, name);
   dataset.close();
 }
 
 template <typename T>
-void read_entry(hid_t dataset, const std::string& name, StateArchive& archive) {
-  const Handle space = owned(H5Dget_space(dataset), H5Sclose, dataset, "get the shape of", name.c_str());
-  const hssize_t size = H5Sget_simple_extent_npoints(space.get());
-  if (size < 0) throw std::runtime_error("checkpoint entry " + name + " is damaged");
+void read_entry(hid_t dataset, const std::string& name, const std::string& path, StateArchive& archive) {
+  const auto damaged = [&](const std::string& what) { return InputError(path + ": checkpoint entry " + name + " " + what); };
+  const hid_t space = H5Dget_space(dataset);
+  if (space < 0) throw damaged("has no shape");
+  const Handle closes_space(space, H5Sclose);
+  hsize_t size = 0;
+  if (H5Sget_simple_extent_ndims(space) != 1 || H5Sget_simple_extent_dims(space, &size, nullptr) != 1) {
+    throw damaged("is not one-dimensional");
+  }
+  require_stored(dataset, size, dataset, "checkpoint entry " + name);
   std::vector<T> values(static_cast<std::size_t>(size));
-  if (size > 0) {
-    check(H5Dread(dataset, file_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), dataset, "read", name.c_str());
+  if (!values.empty() && H5Dread(dataset, file_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+    throw damaged("cannot be read");
+  }
+  if (!has_attribute(dataset, kDigest)) throw damaged("has no digest: the checkpoint is not complete");
+  Digest digest;
+  digest.add(std::span<const T>(values));
+  if (read_attribute<std::uint64_t>(dataset, kDigest, H5T_NATIVE_UINT64) != digest.value()) {
+    throw damaged("is damaged: its values do not give the digest written with them");
   }
   archive.put(name, std::move(values));
 }
 
 // Reads the dataset `name` into the archive with the element type it was written with.
-void read_dataset(hid_t file, const std::string& name, StateArchive& archive) {
-  const Handle dataset = owned(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, file, "open", name.c_str());
-  const Handle type = owned(H5Dget_type(dataset.get()), H5Tclose, file, "get the type of", name.c_str());
+void read_dataset(hid_t file, const std::string& name, const std::string& path, StateArchive& archive) {
+  const hid_t opened = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  if (opened < 0) throw InputError(path + ": checkpoint entry " + name + " cannot be opened");
+  const Handle dataset(opened, H5Dclose);
+  const hid_t typed = H5Dget_type(dataset.get());
+  if (typed < 0) throw InputError(path + ": checkpoint entry " + name + " has no type");
+  const Handle type(typed, H5Tclose);
   const H5T_class_t type_class = H5Tget_class(type.get());
   const std::size_t size = H5Tget_size(type.get());
   const H5T_sign_t sign = H5Tget_sign(type.get());
   const hid_t d = dataset.get();
   if (type_class == H5T_FLOAT && size == 8) {
-    read_entry<double>(d, name, archive);
+    read_entry<double>(d, name, path, archive);
   } else if (type_class == H5T_INTEGER && size == 8 && sign == H5T_SGN_2) {
-    read_entry<std::int64_t>(d, name, archive);
+    read_entry<std::int64_t>(d, name, path, archive);
   } else if (type_class == H5T_INTEGER && size == 4 && sign == H5T_SGN_2) {
-    read_entry<std::int32_t>(d, name, archive);
+    read_entry<std::int32_t>(d, name, path, archive);
   } else if (type_class == H5T_INTEGER && size == 4) {
-    read_entry<std::uint32_t>(d, name, archive);
+    read_entry<std::uint32_t>(d, name, path, archive);
   } else if (type_class == H5T_INTEGER && size == 1 && sign == H5T_SGN_NONE) {
-    read_entry<std::uint8_t>(d, name, archive);
+    read_entry<std::uint8_t>(d, name, path, archive);
   } else {
-    throw std::runtime_error("checkpoint entry " + name + " has an unexpected type");
+    throw InputError(path + ": checkpoint entry " + name + " has an unexpected type");
   }
 }
 
@@ -136,16 +192,18 @@ StateArchive read_checkpoint(const std::string& path) {
   Handle handle = open_file(path);
   const hid_t file = handle.get();
   StateArchive archive;
-  if (read_string_attribute(file, "format") != kFormat) throw std::runtime_error(path + " is not a Granule checkpoint");
+  if (read_string_attribute(file, "format") != kFormat) throw InputError(path + " is not a Granule checkpoint");
   if (const int version = read_attribute<int>(file, "format_version", H5T_NATIVE_INT); version != kFormatVersion) {
-    throw std::runtime_error(fmt::format("{} is a checkpoint of format version {}, written by another version of Granule "
+    throw InputError(fmt::format("{} is a checkpoint of format version {}, written by another version of Granule "
                                          "({}); this one continues runs from version {} only: continue it with the "
                                          "Granule that wrote it, or resume from a snapshot frame (--from-frame)",
                                          path, version, read_string_attribute(file, "granule_version"), kFormatVersion));
   }
   std::vector<std::string> names;
-  check(H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, collect_dataset, &names), file, "list the datasets of", path.c_str());
-  for (const std::string& name : names) read_dataset(file, name, archive);
+  if (H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, collect_dataset, &names) < 0) {
+    throw InputError(path + ": the list of its datasets is damaged");
+  }
+  for (const std::string& name : names) read_dataset(file, name, path, archive);
   handle.close();
   return archive;
 }

@@ -11,7 +11,8 @@
 namespace granule {
 
 void write_checkpoint(const std::string& path, const StateArchive& archive, const std::string& granule_version);
-// Throws std::runtime_error when the file is missing, damaged or not a Granule checkpoint.
+// Throws InputError, naming the file and the entry, when the file is missing, damaged (a dataset
+// whose values do not give the digest written with them) or not a checkpoint of this format.
 StateArchive read_checkpoint(const std::string& path);
 
 }  // namespace granule

@@ -49,7 +49,6 @@ const ConfigSchema& schema() {
 }
 
 constexpr NumberRange kPositive{0.0, kUnbounded, true, true};
-constexpr NumberRange kNonNegative{0.0, kUnbounded, false, true};
 
 // A setting in collisions per particle c.  c·N is rounded to a whole number of collisions, so it
 // must name at least one (c ≥ 1/N) and at most 2⁶² (kMaxCollisions), so that the count and a count
@@ -94,8 +93,8 @@ RunConfig resolve(const toml::table& root) {
   const std::string placement = in.text("initial.placement", {"auto", "random", "lattice"}).value_or("auto");
   c.placement = placement == "random" ? Placement::kRandom : placement == "lattice" ? Placement::kLattice : Placement::kAuto;
   resolve_geometry(in, c);
-  s.restitution = in.number("system.restitution", NumberRange{0.0, 1.0, true, false}).value_or(0.6);
-  s.tc_duration = in.number("system.tc_duration", kNonNegative, " (0 switches the TC model off)").value_or(0.0);
+  s.restitution = in.number("system.restitution", kRestitutions).value_or(0.6);
+  s.tc_duration = in.number("system.tc_duration", kContactDurations, " (0 switches the TC model off)").value_or(0.0);
   resolve_speeds(in, c);
   if (const auto from = in.path_text("initial.from")) {
     for (const char* key : {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile", "initial.placement",

@@ -19,8 +19,6 @@ constexpr NumberRange kSizeRatios{1e-2, 1e2};
 constexpr NumberRange kUniformWidths{0.0, 1.0, true, true};   // σ̄ (1 − w) > 0
 constexpr NumberRange kLogNormalWidths{0.0, 1.0, true, false};
 constexpr NumberRange kFractions{0.0, 1.0, true, true};
-// Explicit species masses: T/m and m v² stay within the speed and temperature ranges.
-constexpr NumberRange kMasses{1e-12, 1e12};
 // The lattice must clear the largest diameter by the placement's margin (10⁻⁹ on the spacing)
 // with room for the round-off of σ̄ · r_max.
 constexpr double kLatticeMargin = 1.0 + 2e-9;
@@ -74,7 +72,7 @@ SizeDistribution resolve_distribution(const ConfigReader& in, int dimension) {
                         "\"bidisperse\", ... }; allowed otherwise: \"volume\" (m ∝ σ^" + std::to_string(dimension) +
                         ", mean mass 1)"};
     }
-    const auto masses = in.number_list("system.masses", 2, kMasses, "\"volume\" or [m_A, m_B]");
+    const auto masses = in.number_list("system.masses", 2, kMassRange, "\"volume\" or [m_A, m_B]");
     dist.species_masses = std::pair{(*masses)[0], (*masses)[1]};
   }
   return dist;

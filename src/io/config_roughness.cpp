@@ -10,9 +10,6 @@ namespace granule {
 
 namespace {
 
-constexpr NumberRange kTangentialRestitutions{-1.0, 1.0};       // β: −1 smooth, +1 perfectly rough
-constexpr NumberRange kInertiaFactors{0.0, 1.0, true, false};    // q: 1 puts all the mass on the rim
-constexpr NumberRange kFrictions{0.0, kUnbounded, false, true};  // μ ≥ 0, finite
 // Uniform disks and spheres: I = m σ²/8 and m σ²/10, i.e. q = ½ and 2/5 of m σ²/4.
 constexpr double kUniformDiskInertia = 0.5;
 constexpr double kUniformSphereInertia = 0.4;

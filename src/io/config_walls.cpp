@@ -12,8 +12,6 @@ namespace granule {
 
 namespace {
 
-constexpr NumberRange kWallRestitutions{0.0, 1.0, true, false};      // e_w ∈ (0, 1]
-constexpr NumberRange kTangentialRestitutions{-1.0, 1.0};            // β_w ∈ [−1, 1]
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};
 const char* const kWallKeys[] = {"boundary.wall_axes", "boundary.wall_restitution",
                                  "boundary.wall_tangential_restitution"};
@@ -59,7 +57,7 @@ void resolve_walls(const ConfigReader& in, bool walls, RunConfig& c) {
                                                    : " (z walls need system.dimension = 3: a 2D box has no z axis)")
                          .value_or(std::vector<std::string>{"y"});
   for (const std::string& name : names) s.walls[name == "x" ? 0 : name == "y" ? 1 : 2] = true;
-  const auto restitution = per_side(in, "boundary.wall_restitution", kWallRestitutions, 1.0, "e_w, normal restitution");
+  const auto restitution = per_side(in, "boundary.wall_restitution", kRestitutions, 1.0, "e_w, normal restitution");
   const auto tangential = per_side(in, "boundary.wall_tangential_restitution", kTangentialRestitutions, -1.0,
                                    "β_w, tangential restitution: −1 a smooth wall, +1 a perfectly rough one");
   const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};

@@ -4,6 +4,7 @@
 
 #include "io/fields_file.hpp"
 #include "io/hdf5_util.hpp"
+#include "io/io_error.hpp"
 
 namespace granule {
 
@@ -27,9 +28,7 @@ void read_group_maps(hid_t file, const std::string& group_name, const FieldGrid&
     std::vector<hsize_t> map = h5::dataset_shape(file, path.c_str());
     if (!map.empty()) map.erase(map.begin());  // the frames axis
     if (map != field_map_shape(grid)) continue;
-    NamedCellArray array{group_name + "_" + name, std::vector<double>(grid.cells())};
-    h5::read_frame(file, path.c_str(), H5T_NATIVE_DOUBLE, array.values.data(), k);
-    arrays.push_back(std::move(array));
+    arrays.push_back({group_name + "_" + name, h5::read_frame_values(file, path.c_str(), k, map)});
   }
   group.close();
 }
@@ -41,14 +40,16 @@ FieldFileFrame read_field_file_frame(const std::string& path, std::int64_t index
   const hid_t file = opened.get();
   FieldFileFrame out;
   out.grid = read_fields_grid(file);
-  out.frames = static_cast<std::int64_t>(h5::dataset_shape(file, "frames/t").at(0));
+  const std::vector<hsize_t> times = h5::dataset_shape(file, "frames/t");
+  if (times.size() != 1) throw InputError(path + ": dataset frames/t is not one time per frame");
+  out.frames = static_cast<std::int64_t>(times[0]);
   const std::int64_t k = index < 0 ? out.frames + index : index;
   if (k < 0 || k >= out.frames) {
     throw std::runtime_error(path + " has " + std::to_string(out.frames) + " frames: no frame " + std::to_string(index));
   }
   const auto frame = static_cast<hsize_t>(k);
-  h5::read_frame(file, "frames/t", H5T_NATIVE_DOUBLE, &out.time, frame);
-  h5::read_frame(file, "frames/c", H5T_NATIVE_DOUBLE, &out.collisions_per_particle, frame);
+  h5::read_frame(file, "frames/t", H5T_NATIVE_DOUBLE, &out.time, frame, {});
+  h5::read_frame(file, "frames/c", H5T_NATIVE_DOUBLE, &out.collisions_per_particle, frame, {});
   read_group_maps(file, "instant", out.grid, frame, out.arrays);
   read_group_maps(file, "average", out.grid, frame, out.arrays);
   opened.close();

@@ -1,8 +1,13 @@
 #include "io/fields_file.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+#include <utility>
 
 #include "io/hdf5_util.hpp"
+#include "io/input_ranges.hpp"
+#include "io/io_error.hpp"
 
 namespace granule {
 
@@ -233,6 +238,16 @@ FieldGrid read_fields_grid(hid_t file) {
     grid.nz = read_attribute<int>(file, "nz", H5T_NATIVE_INT);
     grid.length_z = read_attribute<double>(file, "length_z", H5T_NATIVE_DOUBLE);
   }
+  // A damaged grid would size every map read from the file: its cells are checked first.
+  const auto refuse = [&](const std::string& what) { throw InputError(h5::file_name(file) + ": " + what); };
+  if (grid.dimension != 2 && grid.dimension != 3) refuse("attribute dimension is " + std::to_string(grid.dimension) + "; expected 2 or 3");
+  for (const auto& [name, count] : {std::pair{"nx", grid.nx}, std::pair{"ny", grid.ny}, std::pair{"nz", grid.nz}}) {
+    if (count < 1) refuse(fmt::format("attribute {} is {}; expected a count of cells ≥ 1", name, count));
+  }
+  for (const auto& [name, length] : {std::pair{"length_x", grid.length_x}, std::pair{"length_y", grid.length_y},
+                                     std::pair{"length_z", grid.length_z}}) {
+    if (!kLengthRange.contains(length)) refuse(fmt::format("attribute {} is {}; expected a length in {}", name, length, kLengthRange.text()));
+  }
   return grid;
 }
 
@@ -245,7 +260,7 @@ std::vector<hsize_t> field_map_shape(const FieldGrid& grid) {
 std::vector<double> read_fields_frame_c(const std::string& path) {
   h5::Handle file = h5::open_file(path);
   std::vector<double> c(static_cast<std::size_t>(h5::complete_frames(file.get())));
-  for (std::size_t k = 0; k < c.size(); ++k) h5::read_frame(file.get(), "/frames/c", H5T_NATIVE_DOUBLE, &c[k], k);
+  for (std::size_t k = 0; k < c.size(); ++k) h5::read_frame(file.get(), "/frames/c", H5T_NATIVE_DOUBLE, &c[k], k, {});
   file.close();
   return c;
 }

@@ -16,9 +16,6 @@
 
 namespace granule::h5 {
 
-namespace {
-
-// Paths of the per-frame datasets: those with an unlimited first dimension (create_frames).
 std::vector<std::string> frame_datasets(hid_t file) {
   std::vector<std::string> datasets;
   const auto visit = [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
@@ -36,8 +33,6 @@ std::vector<std::string> frame_datasets(hid_t file) {
   return datasets;
 }
 
-}  // namespace
-
 hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row) {
   std::vector<hsize_t> dims{0}, max{H5S_UNLIMITED}, chunk{1};
   for (hsize_t d : row) {
@@ -45,19 +40,10 @@ hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_
     max.push_back(d);
     chunk.push_back(d);
   }
-  // A chunk holds at most kChunkEntries entries of a frame (1 MiB of doubles, HDF5's default chunk
-  // cache): a frame of 10^8 disks written block by block then needs no buffer of a whole frame
-  // inside HDF5, and no chunk reaches HDF5's limit of 4 GiB.
-  constexpr hsize_t kChunkEntries = hsize_t{1} << 17;
-  if (chunk.size() > 1) {
-    hsize_t per_row = 1;
-    for (std::size_t k = 2; k < chunk.size(); ++k) per_row *= chunk[k];
-    chunk[1] = std::clamp<hsize_t>(kChunkEntries / std::max<hsize_t>(per_row, 1), 1, std::max<hsize_t>(chunk[1], 1));
-  }
   Handle space = owned(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), H5Sclose, file,
                        "describe dataset", name);
-  Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, file, name);
-  check(H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()), file, "set the chunks of", name);
+  // One frame per chunk at most, its rows cut to fit.
+  Handle properties = checksummed_creation_properties(chunk, chunk.size() > 1 ? 1 : 0, file, name);
   Handle dataset = owned(H5Dcreate2(file, name, type, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Dclose,
                          file, "create dataset", name);
   properties.close();
@@ -69,17 +55,28 @@ void add_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> r
   Handle(create_frames(file, name, type, std::move(row)), H5Dclose).close();
 }
 
-void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow, hsize_t first_row,
-                    hsize_t rows) {
+void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
+                       hsize_t rows) {
   Handle dataset = open_dataset(file, name);
   std::vector<hsize_t> dims = extent(dataset.get(), name);
-  if (grow) {
-    dims[0] = frame + 1;
-    check(H5Dset_extent(dataset.get(), dims.data()), file, "extend dataset", name);
-  } else if (frame >= dims[0]) {
-    throw std::out_of_range("dataset " + std::string(name) + " has no frame " + std::to_string(frame));
-  }
+  dims[0] = frame + 1;
+  check(H5Dset_extent(dataset.get(), dims.data()), file, "extend dataset", name);
   Handle space = owned(H5Dget_space(dataset.get()), H5Sclose, file, "get the shape of", name);
+  const std::vector<hsize_t> count = select_frame(space.get(), dims, frame, first_row, rows, file, name);
+  Handle memory = owned(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), H5Sclose, file,
+                        "describe a frame of", name);
+  check(H5Dwrite(dataset.get(), type, memory.get(), space.get(), H5P_DEFAULT, data), file, "write dataset", name);
+  memory.close();
+  space.close();
+  dataset.close();
+}
+
+void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
+  append_frame_rows(file, name, type, data, frame, 0, kAllRows);
+}
+
+std::vector<hsize_t> select_frame(hid_t space, const std::vector<hsize_t>& dims, hsize_t frame, hsize_t first_row,
+                                  hsize_t rows, hid_t file, const char* name) {
   std::vector<hsize_t> start(dims.size(), 0), count = dims;
   start[0] = frame;
   count[0] = 1;
@@ -91,45 +88,9 @@ void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_
     start[1] = first_row;
     count[1] = rows;
   }
-  check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), file,
+  check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), file,
         "select a frame of", name);
-  Handle memory = owned(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), H5Sclose, file,
-                        "describe a frame of", name);
-  if (grow) {
-    check(H5Dwrite(dataset.get(), type, memory.get(), space.get(), H5P_DEFAULT, data), file, "write dataset", name);
-  } else {
-    check(H5Dread(dataset.get(), type, memory.get(), space.get(), H5P_DEFAULT, data), file, "read dataset", name);
-  }
-  memory.close();
-  space.close();
-  dataset.close();
-}
-
-void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame) {
-  transfer_frame(file, name, type, const_cast<void*>(data), frame, true);
-}
-
-void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
-                       hsize_t rows) {
-  transfer_frame(file, name, type, const_cast<void*>(data), frame, true, first_row, rows);
-}
-
-void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame) {
-  transfer_frame(file, name, type, data, frame, false);
-}
-
-std::int64_t complete_frames(hid_t file) {
-  const std::vector<std::string> datasets = frame_datasets(file);
-  hsize_t frames = datasets.empty() ? 0 : std::numeric_limits<hsize_t>::max();
-  for (const std::string& name : datasets) frames = std::min(frames, dataset_shape(file, name.c_str())[0]);
-  return static_cast<std::int64_t>(frames);
-}
-
-std::int64_t complete_frames(const std::string& path) {
-  Handle file = open_file(path);
-  const std::int64_t frames = complete_frames(file.get());
-  file.close();
-  return frames;
+  return count;
 }
 
 PartialFile::PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version)
@@ -143,13 +104,13 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
   {
     Handle file = open_file(current);
     if (read_string_attribute(file.get(), "format") != format) {
-      throw std::invalid_argument(current + " is not a " + format + " file");
+      throw InputError(current + " is not a " + format + " file");
     }
     frames_ = complete_frames(file.get());
     file.close();
   }
   if (keep_frames > frames_) {
-    throw std::invalid_argument(current + " holds " + std::to_string(frames_) + " complete frames, not " +
+    throw InputError(current + " holds " + std::to_string(frames_) + " complete frames, not " +
                                 std::to_string(keep_frames));
   }
   if (keep_frames >= 0) frames_ = keep_frames;

@@ -1,5 +1,6 @@
 #include "io/hdf5_util.hpp"
 
+#include <algorithm>
 #include <string_view>
 #include <utility>
 
@@ -19,6 +20,8 @@ namespace {
 
 // Errors are reported through exceptions, not printed by HDF5 (stderr keeps one clear line).
 void silence_hdf5_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+}  // namespace
 
 // The reason of the failure just reported: the system's own words when HDF5 quotes them (its
 // file drivers do, e.g. "No space left on device"), else the innermost HDF5 message.  Clears
@@ -45,6 +48,8 @@ std::string failure_reason() {
   return reason.innermost.empty() ? "HDF5 gave no reason" : "HDF5: " + reason.innermost;
 }
 
+namespace {
+
 template <typename Query>
 std::string name_of(Query&& query) {
   const ssize_t length = query(nullptr, 0);
@@ -54,9 +59,13 @@ std::string name_of(Query&& query) {
   return name;
 }
 
+}  // namespace
+
 std::string file_name(hid_t object) {
   return name_of([&](char* buffer, std::size_t size) { return H5Fget_name(object, buffer, size); });
 }
+
+namespace {
 
 // The file an object belongs to, as " in <file>" (empty when it belongs to none).
 std::string in_file(hid_t object) {
@@ -110,8 +119,10 @@ Handle access_properties(const std::string& path, bool writing) {
 
 hid_t open_existing(const std::string& path, unsigned flags) {
   silence_hdf5_errors();
+  preflight(path);
   Handle properties = access_properties(path, flags == H5F_ACC_RDWR);
   const hid_t file = H5Fopen(path.c_str(), flags, properties.get());
+  if (file < 0 && flags == H5F_ACC_RDONLY) throw InputError("cannot open " + path + ": " + failure_reason());
   if (file < 0) fail_path("open", path);
   return file;
 }
@@ -138,6 +149,22 @@ Handle owned(hid_t id, Handle::Closer closer, hid_t location, const char* action
 Handle untimed_creation_properties(hid_t property_class, hid_t location, const char* name) {
   Handle properties = owned(H5Pcreate(property_class), H5Pclose, location, "create properties of", name);
   check(H5Pset_obj_track_times(properties.get(), false), location, "set the properties of", name);
+  return properties;
+}
+
+Handle checksummed_creation_properties(std::vector<hsize_t> chunk, std::size_t cut, hid_t location, const char* name) {
+  Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, location, name);
+  if (std::find(chunk.begin(), chunk.end(), 0) != chunk.end()) return properties;  // nothing to store
+  // A chunk holds at most kChunkEntries entries (1 MiB of doubles, HDF5's default chunk cache): a
+  // frame of 10^8 disks written block by block then needs no buffer of a whole frame inside HDF5,
+  // and no chunk reaches HDF5's limit of 4 GiB.
+  constexpr hsize_t kChunkEntries = hsize_t{1} << 17;
+  hsize_t per_row = 1;
+  for (std::size_t k = cut + 1; k < chunk.size(); ++k) per_row *= chunk[k];
+  chunk[cut] = std::clamp<hsize_t>(kChunkEntries / std::max<hsize_t>(per_row, 1), 1, chunk[cut]);
+  check(H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()), location, "set the chunks of", name);
+  // Fletcher-32 per chunk, verified by HDF5 on every read: a flipped bit in the values is refused.
+  check(H5Pset_fletcher32(properties.get()), location, "set the checksum of", name);
   return properties;
 }
 
@@ -194,32 +221,16 @@ void write_string_attribute(hid_t object, const char* name, const std::string& v
   type.close();
 }
 
-void read_attribute_values(hid_t object, const char* name, hid_t type, void* data) {
-  Handle attribute = owned(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, object, "open attribute", name);
-  check(H5Aread(attribute.get(), type, data), object, "read attribute", name);
-  attribute.close();
-}
-
-std::string read_string_attribute(hid_t object, const char* name) {
-  Handle attribute = owned(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, object, "open attribute", name);
-  Handle stored = owned(H5Aget_type(attribute.get()), H5Tclose, object, "get the type of attribute", name);
-  Handle memory = owned(H5Tcopy(H5T_C_S1), H5Tclose, object, "make the string type of", name);
-  std::vector<char> buffer(H5Tget_size(stored.get()) + 1, '\0');
-  check(H5Tset_size(memory.get(), buffer.size()), object, "size the string type of", name);
-  check(H5Aread(attribute.get(), memory.get(), buffer.data()), object, "read attribute", name);
-  memory.close();
-  stored.close();
-  attribute.close();
-  return buffer.data();
-}
-
-Handle open_file(const std::string& path) { return Handle(open_existing(path, H5F_ACC_RDONLY), H5Fclose); }
-
 hid_t create_partial_file(const std::string& path, const char* format, int format_version, const std::string& granule_version) {
   silence_hdf5_errors();
   const std::string partial = path + ".partial";
   Handle creation = untimed_creation_properties(H5P_FILE_CREATE, H5I_INVALID_HID, partial.c_str());
   Handle access = access_properties(partial, true);
+  // The file format of HDF5 1.8 and later: every piece of metadata (superblock, object headers,
+  // chunk indices) carries a checksum that the library verifies when it reads it, so a damaged
+  // file is refused rather than misread (h5py and every HDF5 ≥ 1.8 read it).
+  check(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), H5I_INVALID_HID,
+        "set the format bounds of", partial.c_str());
   const hid_t id = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   if (id < 0) fail_path("create", partial);
   Handle file(id, H5Fclose);
@@ -236,17 +247,11 @@ void publish_partial_file(hid_t file, const std::string& path) {
   publish_file(path + ".partial", path);
 }
 
-std::vector<hsize_t> dataset_shape(hid_t location, const char* name) {
-  Handle dataset = open_dataset(location, name);
-  std::vector<hsize_t> dims = extent(dataset.get(), name);
-  dataset.close();
-  return dims;
-}
-
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data) {
   Handle space = owned(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose, location,
                        "describe dataset", name);
-  Handle properties = untimed_creation_properties(H5P_DATASET_CREATE, location, name);
+  Handle properties = dims.empty() ? untimed_creation_properties(H5P_DATASET_CREATE, location, name)
+                                   : checksummed_creation_properties(dims, 0, location, name);
   Handle dataset = owned(H5Dcreate2(location, name, H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
                          H5Dclose, location, "create dataset", name);
   // An empty dataset (a window that collected nothing) has no buffer to write: HDF5 refuses one.
@@ -262,18 +267,6 @@ void write_vector(hid_t location, const char* name, const std::vector<double>& d
   write_dataset(location, name, {static_cast<hsize_t>(data.size())}, data);
 }
 
-std::vector<double> read_vector(hid_t location, const char* name) {
-  const std::vector<hsize_t> shape = dataset_shape(location, name);
-  if (shape.size() != 1) throw IoError("dataset " + std::string(name) + " in " + file_name(location) + " is not one-dimensional");
-  std::vector<double> values(static_cast<std::size_t>(shape[0]));
-  Handle dataset = open_dataset(location, name);
-  if (!values.empty()) {
-    check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), location, "read dataset", name);
-  }
-  dataset.close();
-  return values;
-}
-
 bool has_attribute(hid_t object, const char* name) { return H5Aexists(object, name) > 0; }
 bool has_link(hid_t location, const char* name) { return H5Lexists(location, name, H5P_DEFAULT) > 0; }
 
@@ -283,16 +276,6 @@ hid_t create_group(hid_t location, const char* name) {
                        "create group", name);
   properties.close();
   return group.release();
-}
-
-std::vector<double> read_frame_series(const std::string& path, const char* name) {
-  Handle file = open_file(path);
-  const htri_t exists = H5Lexists(file.get(), name, H5P_DEFAULT);
-  check(exists, file.get(), "look for", name);
-  std::vector<double> values(exists > 0 ? static_cast<std::size_t>(complete_frames(file.get())) : 0);
-  for (std::size_t k = 0; k < values.size(); ++k) read_frame(file.get(), name, H5T_NATIVE_DOUBLE, &values[k], k);
-  file.close();
-  return values;
 }
 
 }  // namespace granule::h5

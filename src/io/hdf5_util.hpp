@@ -51,18 +51,6 @@ hid_t check_id(hid_t id, hid_t location, const char* action, const char* name);
 void write_attribute(hid_t object, const char* name, hid_t type, const void* data, hsize_t count = 1);
 void write_string_attribute(hid_t object, const char* name, const std::string& value);
 inline void write_double(hid_t object, const char* name, double value) { write_attribute(object, name, H5T_NATIVE_DOUBLE, &value); }
-// Reads a whole attribute, converted to memory type `type`, into `data`.
-void read_attribute_values(hid_t object, const char* name, hid_t type, void* data);
-template <typename T>
-T read_attribute(hid_t object, const char* name, hid_t type) {
-  T value{};
-  read_attribute_values(object, name, type, &value);
-  return value;
-}
-std::string read_string_attribute(hid_t object, const char* name);
-
-// Opens a file read-only.  Throws IoError naming the path.
-Handle open_file(const std::string& path);
 
 // Files a user keeps are written as `<path>.partial` and renamed when complete.  Creates the
 // partial file stamped with the format name, its version and Granule's version (root attributes
@@ -77,27 +65,12 @@ void publish_partial_file(hid_t file, const std::string& path);
 // identifier; add_frames closes it at once.
 hid_t create_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
 void add_frames(hid_t file, const char* name, hid_t type, std::vector<hsize_t> row);
-// The shape of a dataset.
-std::vector<hsize_t> dataset_shape(hid_t location, const char* name);
-// Write (grow = true, extending the dataset to frame + 1 frames) or read one frame of a dataset,
-// or only its rows first_row .. first_row + rows - 1 (rows = kAllRows: the whole frame).
-constexpr hsize_t kAllRows = 0;
-void transfer_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, bool grow,
-                    hsize_t first_row = 0, hsize_t rows = kAllRows);
+// Writes frame `frame` of a dataset, extending it to frame + 1 frames.
 void append_frame(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame);
-// Rows of a frame written block by block (a frame of 10^8 disks without a copy of it).
+// Rows first_row .. first_row + rows - 1 of a frame, written block by block (a frame of 10^8
+// disks without a copy of it).
 void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
                        hsize_t rows);
-void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame);
-
-// The frames every per-frame dataset holds: the shortest length, since a run stopped in the
-// middle of a frame leaves some datasets one frame longer than others (0 without any).
-std::int64_t complete_frames(hid_t file);
-// The same for the file at `path` (a `.partial` or a published file).  Throws IoError.
-std::int64_t complete_frames(const std::string& path);
-// The one-dimensional per-frame dataset `name` of a file of frames (e.g. `shear_velocity` of
-// snapshots.h5) over its complete frames; empty when the file has no such dataset.
-std::vector<double> read_frame_series(const std::string& path, const char* name);
 
 // A file of frames written as `<path>.partial` (snapshots, fields): each frame is flushed when
 // complete, and publish() gives the file its final name.  Destroyed unpublished, it leaves
@@ -108,7 +81,7 @@ class PartialFile {
   PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version);
   // Resume: reopens `<path>.partial` if it exists, else the published `path` renamed back to
   // `<path>.partial` (not copied), and cuts every per-frame dataset to its first `keep_frames`
-  // frames (keep_frames < 0: the complete frames).  Throws std::invalid_argument, before renaming
+  // frames (keep_frames < 0: the complete frames).  Throws InputError, before renaming
   // anything, when the file is not of `format` or holds fewer complete frames than asked for.
   PartialFile(const std::string& path, const char* format, std::int64_t keep_frames);
 
@@ -127,11 +100,59 @@ class PartialFile {
 // A whole fixed-shape double dataset written at once (shape `dims`, row-major `data`).
 void write_dataset(hid_t location, const char* name, const std::vector<hsize_t>& dims, const std::vector<double>& data);
 void write_vector(hid_t location, const char* name, const std::vector<double>& data);
-// A whole one-dimensional double dataset.  Throws IoError.
-std::vector<double> read_vector(hid_t location, const char* name);
 bool has_attribute(hid_t object, const char* name);
 bool has_link(hid_t location, const char* name);
 // A group; the caller owns the identifier.
 hid_t create_group(hid_t location, const char* name);
+
+// Reading a file: every file Granule reads is untrusted.  Each read checks what the file holds
+// against what the caller expects (an attribute's number of values, a dataset's rank and shape, a
+// numeric or string type) before it copies anything, and bounds every size it takes from the file
+// by the bytes the file stores, so that no allocation is sized by a damaged or hostile file.
+// Every refusal and every failed read is an InputError naming the file, the object and what was
+// expected (granule exits with code 2).  Defined in io/hdf5_read.cpp.
+
+// Opens a file read-only.
+Handle open_file(const std::string& path);
+// The name of the file an object belongs to (empty when none), for the messages of a refusal.
+std::string file_name(hid_t object);
+// Reads the `count` values of a numeric attribute (a scalar when count = 1), converted to the
+// numeric memory type `type`, into `data`; an integer type reads only attributes stored as integers.
+void read_attribute_values(hid_t object, const char* name, hid_t type, void* data, hsize_t count = 1);
+template <typename T>
+T read_attribute(hid_t object, const char* name, hid_t type) {
+  T value{};
+  read_attribute_values(object, name, type, &value);
+  return value;
+}
+// A string attribute, fixed-length or variable-length (as h5py writes them).
+std::string read_string_attribute(hid_t object, const char* name);
+
+// Refuses a dataset (`object` names it) whose `count` elements need more bytes than it stores:
+// sizes taken from the file are then bounded by the file's own size.
+void require_stored(hid_t dataset, hsize_t count, hid_t location, const std::string& object);
+// The shape of a dataset.
+std::vector<hsize_t> dataset_shape(hid_t location, const char* name);
+// The shape of each frame of a per-frame dataset (its shape without the frames axis), refused when
+// one frame needs more bytes than the dataset stores.
+std::vector<hsize_t> frame_row(hid_t file, const char* name);
+// Frame `frame` of the per-frame dataset `name`, whose frames must have the shape `row` (empty for
+// a scalar per frame), converted to the numeric memory type `type`, into `data`.
+void read_frame(hid_t file, const char* name, hid_t type, void* data, hsize_t frame, const std::vector<hsize_t>& row);
+// The same as doubles, allocated after the checks.
+std::vector<double> read_frame_values(hid_t file, const char* name, hsize_t frame, const std::vector<hsize_t>& row);
+// A whole one-dimensional numeric dataset as doubles; `length`, when given, is the length it must have.
+constexpr hsize_t kAnyLength = ~hsize_t{0};
+std::vector<double> read_vector(hid_t location, const char* name, hsize_t length = kAnyLength);
+
+// The frames every per-frame dataset holds: the shortest length, since a run stopped in the
+// middle of a frame leaves some datasets one frame longer than others (0 without any).  A dataset
+// that claims more frames than it stores (beyond the one a killed run may leave unwritten) is refused.
+std::int64_t complete_frames(hid_t file);
+// The same for the file at `path` (a `.partial` or a published file).
+std::int64_t complete_frames(const std::string& path);
+// The one-dimensional per-frame dataset `name` of a file of frames (e.g. `shear_velocity` of
+// snapshots.h5) over its complete frames; empty when the file has no such dataset.
+std::vector<double> read_frame_series(const std::string& path, const char* name);
 
 }  // namespace granule::h5

@@ -46,6 +46,20 @@ inline constexpr NumberRange kTemperatureRange{1e-60, 1e60};
 // Rates (a shear rate γ = U/L in `granule theory`): T0 ∝ (lγ)²/ε stays finite.
 inline constexpr NumberRange kRateRange{1e-30, 1e30};
 
+// Masses of the species of a mixture and of each particle (the unit is the mass of the reference
+// grain; volume-scaled masses of size ratios within 10^±2 stay inside): T/m and m v² stay within
+// the speed and temperature ranges.
+inline constexpr NumberRange kMassRange{1e-12, 1e12};
+
+// The ranges of the collision law's parameters, for the configuration and for every file that
+// records them: ẽ and the walls' e_w in (0, 1]; β and β_w in [−1, 1] (−1 smooth, +1 perfectly
+// rough); q = 4I/(mσ²) in (0, 1] (1 puts all the mass on the rim); Coulomb μ ≥ 0; t_c ≥ 0.
+inline constexpr NumberRange kRestitutions{0.0, 1.0, true, false};
+inline constexpr NumberRange kTangentialRestitutions{-1.0, 1.0};
+inline constexpr NumberRange kInertiaFactors{0.0, 1.0, true, false};
+inline constexpr NumberRange kFrictions{0.0, kUnbounded, false, true};
+inline constexpr NumberRange kContactDurations{0.0, kUnbounded, false, true};
+
 // Largest box side over the diameter: a position x ≤ L is stored to L·2⁻⁵³, so at L/σ = 1e9
 // contacts are still resolved to 1e-7 σ; it also keeps every cell count of the engine's grid
 // (≤ L/σ per direction) inside an int.

@@ -1,6 +1,8 @@
-// The one exception for a failed input/output operation on a file Granule writes (cannot create,
-// write, flush, sync, close or rename it; disk full).  `granule` reports it and exits with code 4;
-// its message names the file and what failed, with the system's reason when there is one.
+// The two exceptions of Granule's files.  IoError: a file Granule writes could not be created,
+// written, flushed, synced, closed or renamed (disk full); `granule` exits with code 4.
+// InputError: a file Granule reads is missing, unreadable, damaged or not what its schema says;
+// `granule` refuses it with code 2, before anything is written.  Both messages name the file, and
+// InputError the dataset or attribute and what was expected.
 #pragma once
 
 #include <cstring>
@@ -10,6 +12,11 @@
 namespace granule {
 
 class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

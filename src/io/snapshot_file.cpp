@@ -1,12 +1,17 @@
 #include "io/snapshot_file.hpp"
 
-#include "io/hdf5_util.hpp"
-
+#include <fmt/format.h>
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
+
+#include "io/hdf5_util.hpp"
+#include "io/io_error.hpp"
+#include "io/system_checks.hpp"
 
 namespace granule {
 
@@ -98,11 +103,11 @@ void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
   }
   if (has_attribute(f, "walls")) {
     int walls[3] = {0, 0, 0};
-    read_attribute_values(f, "walls", H5T_NATIVE_INT, walls);
+    read_attribute_values(f, "walls", H5T_NATIVE_INT, walls, 3);
     double restitution[6], tangential[6], velocity[18];
-    read_attribute_values(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution);
-    read_attribute_values(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential);
-    read_attribute_values(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity);
+    read_attribute_values(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution, 6);
+    read_attribute_values(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential, 6);
+    read_attribute_values(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
     for (std::size_t a = 0; a < 3; ++a) p.walls[a] = walls[a] != 0;
     for (std::size_t face = 0; face < 6; ++face) {
       p.wall[face].restitution = restitution[face];
@@ -110,21 +115,45 @@ void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
       for (std::size_t a = 0; a < 3; ++a) p.wall[face].velocity[a] = velocity[3 * face + a];
     }
   }
-  if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data());
+  if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+}
+
+// What is wrong with a frame's clock and counters: times, strains, offsets and U(t) finite, counts
+// not negative, the TC model's times of last collision in the past (−∞: none yet).
+std::vector<std::string> frame_problems(const SnapshotFrame& frame, std::size_t particles) {
+  std::vector<std::string> problems;
+  for_each_scalar(frame, [&](const char* name, hid_t type, const void* value) {
+    const bool integer = H5Tequal(type, H5T_NATIVE_INT64) > 0;
+    const double v = integer ? static_cast<double>(*static_cast<const std::int64_t*>(value)) : *static_cast<const double*>(value);
+    const bool count = integer || std::string_view(name) == "collisions_per_particle" || std::string_view(name) == "time";
+    if (!std::isfinite(v) || (count && v < 0.0)) {
+      problems.push_back(fmt::format("{} is {}; expected a finite{} number", name, v, count ? " non-negative" : ""));
+    }
+  });
+  for (std::size_t i = 0; i < frame.clock.last_collision.size() && i < particles; ++i) {
+    const double t = frame.clock.last_collision[i];
+    if (std::isnan(t) || t == INFINITY) {
+      problems.push_back(fmt::format("last_collision of particle {} is {}; expected a time before the frame", i, t));
+      break;
+    }
+  }
+  return problems;
 }
 
 // The metadata of an open snapshot file.
 SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
-  if (read_string_attribute(f, "format") != kFormat) throw std::runtime_error(path + " is not a Granule snapshot file");
+  if (read_string_attribute(f, "format") != kFormat) throw InputError(path + " is not a Granule snapshot file");
   SnapshotMetadata m;
   m.version = read_string_attribute(f, "granule_version");
   m.boundary = read_string_attribute(f, "boundary");
   m.system.particles = read_attribute<std::int64_t>(f, "particles", H5T_NATIVE_INT64);
   m.system.diameter = read_attribute<double>(f, "diameter", H5T_NATIVE_DOUBLE);
   m.system.dimension = has_attribute(f, "dimension") ? read_attribute<int>(f, "dimension", H5T_NATIVE_INT) : 2;
-  if (m.system.dimension != 2 && m.system.dimension != 3) throw std::runtime_error(path + " has an invalid dimension");
+  if (m.system.dimension != 2 && m.system.dimension != 3) {
+    throw InputError(path + ": attribute dimension is " + std::to_string(m.system.dimension) + "; expected 2 or 3");
+  }
   double box[3] = {0.0, 0.0, 1.0};
-  read_attribute_values(f, "box", H5T_NATIVE_DOUBLE, box);
+  read_attribute_values(f, "box", H5T_NATIVE_DOUBLE, box, static_cast<hsize_t>(m.system.dimension));
   m.system.length_x = box[0];
   m.system.length_y = box[1];
   m.system.length_z = box[2];
@@ -135,6 +164,10 @@ SnapshotMetadata read_metadata(hid_t f, const std::string& path) {
   m.system.shear_velocity = read_attribute<double>(f, "shear_velocity", H5T_NATIVE_DOUBLE);
   m.seed = read_attribute<std::uint64_t>(f, "seed", H5T_NATIVE_UINT64);
   read_grains_walls_gravity_attributes(f, m.system);
+  refuse_problems(path, system_problems(m.system));
+  if (m.boundary != "periodic" && m.boundary != "lees-edwards" && m.boundary != "walls") {
+    throw InputError(path + ": attribute boundary is \"" + m.boundary + "\"; expected periodic, lees-edwards or walls");
+  }
   return m;
 }
 
@@ -223,35 +256,32 @@ SnapshotRead read_snapshot(const std::string& path, std::int64_t index) {
   const auto frame = static_cast<hsize_t>(k);
 
   const auto n = static_cast<std::size_t>(m.system.particles);
-  SnapshotFrame& s = out.frame;
-  s.particles.dimension = m.system.dimension;
-  if (m.polydisperse) {
-    s.particles.diameter = read_vector(f, "diameters");
-    s.particles.mass = read_vector(f, "masses");
-    if (s.particles.diameter.size() != n || s.particles.mass.size() != n) {
-      throw std::runtime_error(path + " has diameters or masses of the wrong length");
-    }
-  }
-  s.particles.resize(n);
-  std::vector<double> buffer(static_cast<std::size_t>(m.system.dimension) * n);
-  ParticleState& p = s.particles;
+  const auto rows = static_cast<hsize_t>(n);
   const int d = m.system.dimension;
-  read_frame(f, "positions", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  deinterleave(buffer, n, d, [&](int a) -> auto& { return p.position(a); });
-  read_frame(f, "velocities", H5T_NATIVE_DOUBLE, buffer.data(), frame);
-  deinterleave(buffer, n, d, [&](int a) -> auto& { return p.velocity(a); });
+  SnapshotFrame& s = out.frame;
+  ParticleState& p = s.particles;
+  p.dimension = d;
+  if (m.polydisperse) {
+    p.diameter = read_vector(f, "diameters", rows);
+    p.mass = read_vector(f, "masses", rows);
+  }
+  // Each read checks the dataset's shape against the particles attribute before it allocates.
+  deinterleave(read_frame_values(f, "positions", frame, {rows, static_cast<hsize_t>(d)}), n, d,
+               [&](int a) -> auto& { return p.position(a); });
+  deinterleave(read_frame_values(f, "velocities", frame, {rows, static_cast<hsize_t>(d)}), n, d,
+               [&](int a) -> auto& { return p.velocity(a); });
   if (m.system.roughness.rough) {
-    std::vector<double> spins(static_cast<std::size_t>(p.spin_components()) * n);
-    read_frame(f, "spins", H5T_NATIVE_DOUBLE, spins.data(), frame);
-    deinterleave(spins, n, p.spin_components(), [&](int a) -> auto& { return spin_column(p, a); });
+    const int components = p.spin_components();
+    const std::vector<hsize_t> row = d == 3 ? std::vector<hsize_t>{rows, 3} : std::vector<hsize_t>{rows};
+    deinterleave(read_frame_values(f, "spins", frame, row), n, components, [&](int a) -> auto& { return spin_column(p, a); });
   }
-  for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame); });
+  for_each_scalar(s, [&](const char* name, hid_t type, void* value) { read_frame(f, name, type, value, frame, {}); });
   s.clock.protocol_running = true;  // frames are written in production only
-  if (m.system.tc_duration > 0.0) {
-    s.clock.last_collision.resize(n);
-    read_frame(f, "last_collision", H5T_NATIVE_DOUBLE, s.clock.last_collision.data(), frame);
-  }
+  if (m.system.tc_duration > 0.0) s.clock.last_collision = read_frame_values(f, "last_collision", frame, {rows});
   file.close();
+  const std::string where = path + " frame " + std::to_string(k);
+  refuse_problems(where, particle_problems(p, m.system));
+  refuse_problems(where, frame_problems(s, n));
   return out;
 }
 

@@ -50,7 +50,7 @@ class SnapshotWriter {
   // Continues `path` (resume): reopens `path`.partial, or the published `path` renamed back to
   // `path`.partial (not copied), keeping its first `keep_frames` frames (kCompleteFrames: every
   // frame all datasets hold); later frames are appended after them and finish() publishes the
-  // file again.  Throws std::invalid_argument when the file holds fewer complete frames.
+  // file again.  Throws InputError when the file holds fewer complete frames.
   explicit SnapshotWriter(const std::string& path, std::int64_t keep_frames = kCompleteFrames);
   ~SnapshotWriter();  // a writer not finished leaves `path`.partial, closed
   SnapshotWriter(const SnapshotWriter&) = delete;

@@ -34,11 +34,9 @@ SpacetimeProfiles spacetime_from_fields(const std::string& fields_path, const st
   const std::pair<const char*, std::vector<double>*> used[] = {
       {"density", &maps.density}, {"velocity_x", &maps.velocity_x}, {"velocity_y", &maps.velocity_y},
       {"temperature", &maps.temperature}};
-  for (auto& [name, values] : used) values->resize(maps.grid.cells());
+  const std::vector<hsize_t> map = field_map_shape(maps.grid);
   for (std::size_t k = 0; k < frames; ++k) {
-    for (auto& [name, values] : used) {
-      h5::read_frame(file, (group + "/" + name).c_str(), H5T_NATIVE_DOUBLE, values->data(), k);
-    }
+    for (auto& [name, values] : used) *values = h5::read_frame_values(file, (group + "/" + name).c_str(), k, map);
     append_profiles(out, streamwise_profiles(maps));
   }
   opened.close();

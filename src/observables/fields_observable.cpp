@@ -58,7 +58,7 @@ class FieldsObservable final : public Observable<D> {
     interval_start_c_ = archive.scalar(prefix + "interval_start_c");
     last_frame_collisions_ = archive.integer(prefix + "last_fields_collisions");
     last_sample_collisions_ = archive.integer(prefix + "last_sample_collisions");
-    writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", archive.integer(prefix + "fields_frames"));
+    writer_ = std::make_unique<FieldsWriter>(out_dir_ + "/fields.h5", archive.count(prefix + "fields_frames"));
   }
 
   void save(StateArchive& archive, const std::string& prefix) const override {

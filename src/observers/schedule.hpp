@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "engine/simulation.hpp"
@@ -80,6 +81,13 @@ struct Schedule {
     next_time = archive.scalar(prefix + "next_time");
     skipped = archive.integer(prefix + "skipped");
     rounded_up = archive.integer(prefix + "rounded_up") != 0;
+    // Triggers from an origin in the run's past, lying ahead of it: a damaged schedule (NaN, or a
+    // trigger behind its origin) would fire at every stop or never.
+    if (origin_collisions < 0 || origin_collisions > sim.collisions() || !std::isfinite(origin_time) || origin_time < 0.0 ||
+        origin_time > sim.time() || next_collisions < origin_collisions || std::isnan(next_time) || next_time < origin_time ||
+        skipped < 0) {
+      throw std::runtime_error("checkpoint entries " + prefix + "*: the schedule's origin or next trigger is not of this run");
+    }
     const std::string saved_c = prefix + "every_collisions_per_particle", saved_t = prefix + "every_time";
     if (!archive.contains(saved_c)) return;
     if (archive.scalar(saved_c) != every_c.value_or(0.0)) {

@@ -64,10 +64,10 @@ DensityLayers read_density_layers(const std::string& fields_path) {
   DensityLayers d;
   d.dimension = grid.dimension;
   d.cells = {grid.nx, grid.ny, grid.nz};
-  std::vector<double> first(grid.cells()), last(grid.cells()), c(static_cast<std::size_t>(frames));
-  h5::read_frame(file.get(), "/instant/count", H5T_NATIVE_DOUBLE, first.data(), 0);
-  h5::read_frame(file.get(), "/instant/count", H5T_NATIVE_DOUBLE, last.data(), static_cast<hsize_t>(frames - 1));
-  d.c_last = h5::read_vector(file.get(), "/frames/c")[static_cast<std::size_t>(frames - 1)];
+  const std::vector<hsize_t> map = field_map_shape(grid);
+  const std::vector<double> first = h5::read_frame_values(file.get(), "/instant/count", 0, map);
+  const std::vector<double> last = h5::read_frame_values(file.get(), "/instant/count", static_cast<hsize_t>(frames - 1), map);
+  h5::read_frame(file.get(), "/frames/c", H5T_NATIVE_DOUBLE, &d.c_last, static_cast<hsize_t>(frames - 1), {});
   double particles = 0.0;
   for (double n : last) particles += n;
   // The start's structure factor at the cell scale, S = M var(n/M): 1 for an ideal gas, below 1 for

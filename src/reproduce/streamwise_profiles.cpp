@@ -19,8 +19,7 @@ StreamwiseProfiles read_streamwise_profiles(const std::string& fields_path, doub
   const std::size_t rows = p.y.size();
   const bool with_flux = h5::has_link(file.get(), "/profiles/average_heat_flux_total_y");
   const auto accumulate = [&](const char* name, std::vector<double>& sum, std::size_t k) {
-    std::vector<double> row(rows);
-    h5::read_frame(file.get(), name, H5T_NATIVE_DOUBLE, row.data(), k);
+    const std::vector<double> row = h5::read_frame_values(file.get(), name, k, {rows});
     sum.resize(rows, 0.0);
     for (std::size_t r = 0; r < rows; ++r) sum[r] += row[r];
   };

@@ -65,7 +65,7 @@ TEST(Fields3d, FileHoldsEveryFieldAsVolumesWithTheGridAndImageState) {
   EXPECT_EQ(grid.length_z, 1.0);
   EXPECT_EQ(h5::dataset_shape(file.get(), "/average/kinetic_yz"), (std::vector<hsize_t>{3, 2, 3, 4}));
   double offset = 0.0;
-  h5::read_frame(file.get(), "/frames/shear_offset", H5T_NATIVE_DOUBLE, &offset, 2);
+  h5::read_frame(file.get(), "/frames/shear_offset", H5T_NATIVE_DOUBLE, &offset, 2, {});
   EXPECT_EQ(offset, 0.5);
   file.close();
 

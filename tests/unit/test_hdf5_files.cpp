@@ -35,8 +35,8 @@ SnapshotMetadata metadata(double tc_duration = 0.0) {
   SnapshotMetadata m;
   m.system.particles = kParticles;
   m.system.diameter = 0.01;
-  m.system.length_x = 1.0;
-  m.system.length_y = 2.0;
+  m.system.length_x = 100.0;  // every position of the labelled frames below lies inside
+  m.system.length_y = 200.0;
   m.system.restitution = 0.8;
   m.system.tc_duration = tc_duration;
   m.packing_fraction = 0.1;
@@ -193,7 +193,7 @@ TEST(SnapshotFile, RefusesToKeepMoreFramesThanItHoldsAndRenamesNothing) {
     writer.append(frame(0));
     writer.finish();
   }
-  EXPECT_THROW(SnapshotWriter(path, 2), std::invalid_argument);
+  EXPECT_THROW(SnapshotWriter(path, 2), InputError);
   EXPECT_TRUE(fs::exists(path));
   EXPECT_FALSE(fs::exists(path + ".partial"));
 }
@@ -225,7 +225,7 @@ TEST(SnapshotFile, FailuresNameTheFile) {
     EXPECT_NE(message.find(path + ".partial"), std::string::npos) << message;
     EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
   }
-  EXPECT_THROW(read_snapshot(path), IoError);
+  EXPECT_THROW(read_snapshot(path), InputError);  // a missing input: refused, exit 2
 }
 
 FieldsFrame fields_frame(const FieldGrid& grid, int label) {

@@ -173,14 +173,13 @@ TEST(RoughFieldsFile, HoldsSpinFieldsAndTheFullStressOnlyForRoughRuns) {
       EXPECT_EQ(h5::has_link(file.get(), name), rough) << name;
     }
     if (rough) {
-      double t_rot[2] = {0.0, 0.0}, yx[2] = {0.0, 0.0};
-      h5::read_frame(file.get(), "/average/rotational_temperature", H5T_NATIVE_DOUBLE, t_rot, 0);
-      h5::read_frame(file.get(), "/average/collisional_yx", H5T_NATIVE_DOUBLE, yx, 0);
+      const auto frame0 = [&](const char* name) { return h5::read_frame_values(file.get(), name, 0, h5::frame_row(file.get(), name)); };
+      const std::vector<double> t_rot = frame0("/average/rotational_temperature");
+      const std::vector<double> yx = frame0("/average/collisional_yx");
       EXPECT_NEAR(t_rot[0], 14.0 / 2400.0, 1e-17);
       // k̂ = x̂ at the contact (0.45, 0.4), in cell 0: τ_yx = σ k_y P_x = 0, τ_xy = σ k_x P_y = σ · 0.5.
       EXPECT_EQ(yx[0], 0.0);
-      double xy[2] = {0.0, 0.0};
-      h5::read_frame(file.get(), "/average/collisional_xy", H5T_NATIVE_DOUBLE, xy, 0);
+      const std::vector<double> xy = frame0("/average/collisional_xy");
       EXPECT_NEAR(xy[0], kSigma * 0.5 / grid.cell_area(), 1e-16);
     }
     file.close();

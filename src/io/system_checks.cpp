@@ -1,0 +1,101 @@
+#include "io/system_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "io/input_ranges.hpp"
+#include "io/io_error.hpp"
+
+namespace granule {
+
+namespace {
+
+constexpr const char* kAxes[3] = {"x", "y", "z"};
+
+void require(std::vector<std::string>& problems, const std::string& name, double value, const NumberRange& range) {
+  if (!range.contains(value)) problems.push_back(fmt::format("{} is {}; expected {}", name, value, range.text()));
+}
+
+void require_finite(std::vector<std::string>& problems, const std::string& name, double value) {
+  if (!std::isfinite(value)) problems.push_back(fmt::format("{} is {}; expected a finite number", name, value));
+}
+
+// The first particle of `values` outside `range` (a problem, not one per particle).
+void require_each(std::vector<std::string>& problems, const std::string& name, const std::vector<double>& values,
+                  const NumberRange& range) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!range.contains(values[i])) {
+      problems.push_back(fmt::format("{} of particle {} is {}; expected {}", name, i, values[i], range.text()));
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> system_problems(const SystemParams& s) {
+  std::vector<std::string> problems;
+  if (s.dimension != 2 && s.dimension != 3) problems.push_back(fmt::format("dimension is {}; expected 2 or 3", s.dimension));
+  if (s.particles < 2 || s.particles > INT32_MAX) {
+    problems.push_back(fmt::format("particles is {}; expected [2, {}]", s.particles, INT32_MAX));
+  }
+  require(problems, "diameter", s.diameter, kLengthRange);
+  const double lengths[3] = {s.length_x, s.length_y, s.length_z};
+  for (int a = 0; a < (s.dimension == 3 ? 3 : 2); ++a) {
+    const std::string name = fmt::format("box length along {}", kAxes[a]);
+    require(problems, name, lengths[a], kLengthRange);
+    if (kLengthRange.contains(s.diameter) && lengths[a] / s.diameter > kMaxBoxOverDiameter) {
+      problems.push_back(fmt::format("{} is {} diameters; at most {:g} are resolved", name, lengths[a] / s.diameter,
+                                     kMaxBoxOverDiameter));
+    }
+  }
+  require(problems, "restitution", s.restitution, kRestitutions);
+  require(problems, "tc_duration", s.tc_duration, kContactDurations);
+  require_finite(problems, "shear_velocity", s.shear_velocity);
+  for (int a = 0; a < 3; ++a) require_finite(problems, fmt::format("gravity along {}", kAxes[a]), s.gravity[static_cast<std::size_t>(a)]);
+  if (s.roughness.rough) {
+    require(problems, "tangential_restitution", s.roughness.tangential_restitution, kTangentialRestitutions);
+    require(problems, "inertia_factor", s.roughness.inertia_factor, kInertiaFactors);
+    if (!std::isinf(s.roughness.friction)) require(problems, "friction", s.roughness.friction, kFrictions);
+  }
+  for (std::size_t face = 0; face < 6; ++face) {
+    if (!s.walls[face / 2]) continue;
+    const std::string wall = fmt::format("the wall at {} of {}", face % 2 == 0 ? "0" : "L", kAxes[face / 2]);
+    require(problems, "restitution of " + wall, s.wall[face].restitution, kRestitutions);
+    require(problems, "tangential restitution of " + wall, s.wall[face].tangential_restitution, kTangentialRestitutions);
+    for (std::size_t a = 0; a < 3; ++a) require_finite(problems, fmt::format("velocity of {} along {}", wall, kAxes[a]), s.wall[face].velocity[a]);
+  }
+  return problems;
+}
+
+std::vector<std::string> particle_problems(const ParticleState& p, const SystemParams& s) {
+  std::vector<std::string> problems;
+  const NumberRange any{-kUnbounded, kUnbounded, true, true};
+  if (p.polydisperse()) {
+    require_each(problems, "diameter", p.diameter, NumberRange{kLengthRange.low, s.diameter});
+    require_each(problems, "mass", p.mass, kMassRange);
+  }
+  const double lengths[3] = {s.length_x, s.length_y, s.length_z};
+  for (int a = 0; a < p.dimension; ++a) {
+    // Positions lie in [0, L] up to the round-off of wrapping into the box.
+    const double length = lengths[a];
+    const double slack = 1e-9 * length;
+    require_each(problems, fmt::format("position along {}", kAxes[a]), p.position(a), NumberRange{-slack, length + slack});
+    require_each(problems, fmt::format("velocity along {}", kAxes[a]), p.velocity(a), any);
+  }
+  if (p.rough()) {
+    for (int k = 0; k < p.spin_components(); ++k) require_each(problems, "angular velocity", p.spin(k), any);
+  }
+  return problems;
+}
+
+void refuse_problems(const std::string& file, const std::vector<std::string>& problems) {
+  if (problems.empty()) return;
+  std::string text = file + ":";
+  for (std::size_t k = 0; k < problems.size(); ++k) text += (k ? "; " : " ") + problems[k];
+  throw InputError(text);
+}
+
+}  // namespace granule
