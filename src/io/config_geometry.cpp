@@ -165,6 +165,13 @@ void resolve_geometry(const ConfigReader& in, RunConfig& c) {
                                   fractions.text(), context)};
   }
   c.reference_diameter = diameter ? given : reference_diameter_for(d, given, sizes.sum_of_powers, volume);
+  // ν → σ̄ → ν rounds: a ν at the limit (allowed) may come back an ulp above it.  σ̄ steps down by
+  // ulps until it does not, so that a ν the range allows is never refused for round-off.
+  for (int step = 0; !diameter && step < 16 && limit.inclusive &&
+                     packing_fraction(d, sizes.sum_of_powers, c.reference_diameter, volume) > limit.value;
+       ++step) {
+    c.reference_diameter = std::nextafter(c.reference_diameter, 0.0);
+  }
   s.diameter = c.reference_diameter * sizes.largest;  // the engine sizes its cells by the largest
   // ν is always the one of σ̄, so that a configuration re-read from to_toml() (which stores σ̄) is
   // identical in every field.

@@ -145,5 +145,27 @@ TEST(ConfigGeometry, ToTomlRoundTrips) {
   }
 }
 
+// A ν at the limit of its range is allowed, and the round trip ν → σ̄ → ν must not push it an ulp
+// beyond: mixtures whose lattice reaches less than random addition have the random-addition
+// limit itself as their (inclusive) bound.
+TEST(ConfigGeometry, PackingFractionAtItsLimitIsNotRefusedForRoundOff) {
+  int parsed = 0;
+  for (int n = 300; n <= 700; ++n) {
+    for (const char* mixture : {"ratio=3, fraction=0.05", "ratio=5, fraction=0.05", "ratio=8, fraction=0.5", "ratio=5, fraction=0.95"}) {
+      const std::string sizes = std::string("system.diameters={distribution=\"bidisperse\", ") + mixture + "}";
+      for (const auto& keys : {std::vector<std::string>{"system.dimension=3", kCube, "system.packing_fraction=0.3"},
+                               std::vector<std::string>{"system.area_fraction=0.45"}}) {
+        std::vector<std::string> all = keys;
+        all.push_back("system.particles=" + std::to_string(n));
+        all.push_back(sizes);
+        const ConfigResult result = parse(all);
+        ASSERT_TRUE(result.config) << "N = " << n << ", " << mixture << ": " << result.error;
+        ++parsed;
+      }
+    }
+  }
+  EXPECT_EQ(parsed, 401 * 8);
+}
+
 }  // namespace
 }  // namespace granule
