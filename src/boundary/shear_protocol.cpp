@@ -152,6 +152,19 @@ ShearSegment ShearProtocol::segment_from(double t) const {
   return {t, end, integral(t, end) / (end - t)};
 }
 
+std::int64_t ShearProtocol::segments_while_changing(std::int64_t cap) const {
+  if (constant()) return 1;
+  // The protocol changes until its last break, and a ramp until U is within the tolerance of U₀
+  // (t = τ ln(1/tolerance)); each later segment is longer than any before.
+  double last_break = 0.0;
+  for (double t = 0.0; (t = next_break(t)) < kInf;) last_break = t;
+  const double ramp_end = history_.ramp_time > 0.0 ? history_.ramp_time * std::log(1.0 / history_.tolerance) : 0.0;
+  const double until = std::max(last_break, ramp_end);
+  std::int64_t count = 1;
+  for (ShearSegment segment = segment_from(0.0); segment.end < until && count < cap; segment = segment_from(segment.end)) ++count;
+  return count;
+}
+
 ShearSegment ShearProtocol::segment_containing(double t) const {
   ShearSegment segment = segment_from(0.0);
   while (segment.end <= t) segment = segment_from(segment.end);

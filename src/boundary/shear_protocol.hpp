@@ -9,6 +9,7 @@
 // schedule point, the start or end of the oscillation).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -59,6 +60,9 @@ class ShearProtocol {
   bool constant() const;
   // The segment that starts at t (t ≥ 0).
   ShearSegment segment_from(double t) const;
+  // The segments a run takes while U(t) changes (up to its last break, or until a ramp is within
+  // the tolerance of U₀), counted up to `cap`: each segment end costs the engine an action.
+  std::int64_t segments_while_changing(std::int64_t cap) const;
   // The segment that contains t, found by chaining segments from 0 exactly as a run does.
   ShearSegment segment_containing(double t) const;
 

@@ -110,5 +110,29 @@ TEST(ShearProtocol, SegmentsKeepTheirPromises) {
   }
 }
 
+// The cost a run is warned of: an exponential ramp needs dn = dt / (tolerance τ e^{t/τ}) segments,
+// (1 − tolerance)/tolerance until U is within the tolerance of U₀ (in the continuum limit: the
+// engine's steps take the slope at their start, a few per cent more); a linear schedule piece of
+// slope s over a span T needs ⌈s T/(tolerance · U_max)⌉.
+TEST(ShearProtocol, SegmentsWhileChangingAsTheSlopeDemands) {
+  for (const double tolerance : {1e-2, 1e-3, 1e-4}) {
+    ShearHistory ramp;
+    ramp.ramp_time = 0.7;
+    ramp.tolerance = tolerance;
+    const double expected = (1.0 - tolerance) / tolerance;
+    EXPECT_NEAR(static_cast<double>(ShearProtocol(5.0, ramp).segments_while_changing(1 << 30)), expected, 0.05 * expected + 2.0)
+        << "tolerance " << tolerance;
+  }
+  ShearHistory linear;
+  linear.schedule = {{0.0, 0.0}, {2.0, 4.0}};
+  linear.tolerance = 1e-3;
+  // |U − Ū| ≤ slope · Δt / 2 would allow twice as long; the engine's bound is slope · Δt.
+  EXPECT_EQ(ShearProtocol(0.0, linear).segments_while_changing(1 << 30), 1000);
+  ShearHistory fine = linear;
+  fine.tolerance = 1e-9;
+  EXPECT_EQ(ShearProtocol(0.0, fine).segments_while_changing(1000000), 1000000) << "the count stops at the cap";
+  EXPECT_EQ(ShearProtocol(3.0, ShearHistory{}).segments_while_changing(1000000), 1) << "a steady U is one segment";
+}
+
 }  // namespace
 }  // namespace granule
