@@ -22,6 +22,7 @@
 #include "app/analyze/analyze_command.hpp"
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
+#include "io/frame_selection.hpp"
 #include "io/io_error.hpp"
 #include "io/snapshot_file.hpp"
 #include "io/spectra_file.hpp"
@@ -54,46 +55,6 @@ struct SpectraOptions {
   double false_alarm = kDefaultFalseAlarm;
 };
 
-// "all", or comma-separated items: an index (negative counts from the end) or a Python-style slice
-// start:stop[:step] with optional parts.  Returns the frame indices, or an error message.
-std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t total, std::string& error) {
-  std::vector<std::int64_t> frames;
-  const auto resolve = [&](std::int64_t i) { return i < 0 ? total + i : i; };
-  std::size_t start = 0;
-  while (error.empty() && start <= spec.size()) {
-    const std::size_t comma = std::min(spec.find(',', start), spec.size());
-    const std::string item = spec.substr(start, comma - start);
-    start = comma + 1;
-    try {
-      if (item == "all") {
-        for (std::int64_t i = 0; i < total; ++i) frames.push_back(i);
-      } else if (item.find(':') == std::string::npos) {
-        std::size_t used = 0;
-        const std::int64_t i = resolve(std::stoll(item, &used));
-        if (used != item.size() || i < 0 || i >= total) throw std::out_of_range(item);
-        frames.push_back(i);
-      } else {
-        std::vector<std::string> parts;
-        for (std::size_t p = 0, colon = 0; colon != std::string::npos; p = colon + 1) {
-          colon = item.find(':', p);
-          parts.push_back(item.substr(p, colon == std::string::npos ? std::string::npos : colon - p));
-        }
-        if (parts.size() > 3) throw std::invalid_argument(item);
-        const std::int64_t step = parts.size() == 3 && !parts[2].empty() ? std::stoll(parts[2]) : 1;
-        if (step <= 0) throw std::invalid_argument(item);
-        const std::int64_t first = parts[0].empty() ? 0 : std::clamp<std::int64_t>(resolve(std::stoll(parts[0])), 0, total);
-        const std::int64_t last = parts[1].empty() ? total : std::clamp<std::int64_t>(resolve(std::stoll(parts[1])), 0, total);
-        for (std::int64_t i = first; i < last; i += step) frames.push_back(i);
-      }
-    } catch (const std::exception&) {
-      error = fmt::format("--frames: '{}' is not a frame index in [-{}, {}) or a slice start:stop[:step] (step > 0)",
-                          item, total, total);
-    }
-  }
-  if (error.empty() && frames.empty()) error = fmt::format("--frames '{}' selects no frame (the file has {})", spec, total);
-  return frames;
-}
-
 int bad_spectra_input(const std::string& message) {
   fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
   return kExitBadInput;
@@ -116,9 +77,12 @@ int analyze_spectra(const SpectraOptions& options) {
   } catch (const std::exception& error) {
     return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
   }
-  std::string error;
-  const std::vector<std::int64_t> frames = parse_frames(options.frames, first.frames, error);
-  if (!error.empty()) return bad_spectra_input(error);
+  std::vector<std::int64_t> frames;
+  try {
+    frames = parse_frame_selection(options.frames, first.frames);
+  } catch (const BadInput& error) {
+    return bad_spectra_input(error.what());
+  }
   const SnapshotMetadata& metadata = first.metadata;
   const int dimension = metadata.system.dimension;
   const double length_z = metadata.system.length_z;

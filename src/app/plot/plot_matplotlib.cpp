@@ -8,7 +8,8 @@
 #include <utility>
 
 #include "app/plot/plot_command.hpp"
-#include "app/plot/plot_inputs.hpp"
+#include "io/run_files.hpp"
+#include "render/plot_scripts.hpp"
 
 namespace granule::app {
 
@@ -41,7 +42,7 @@ bool was_given(const ScriptArguments& a, const char* option) {
 
 // `granule plot fields` of a 3D fields.h5: the density isosurface coloured by V_x (Figs C.1–C.3).
 int plot_isosurface(const ScriptArguments& a, const std::string& input, const std::string& out) {
-  if (a.quantities.size() > 1) throw BadPlotInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
+  if (a.quantities.size() > 1) throw BadInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
   std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi),
                                      "--group", a.group};
   if (!a.quantities.empty()) arguments.insert(arguments.end(), {"--quantity", a.quantities[0]});
@@ -56,7 +57,7 @@ int plot_isosurface(const ScriptArguments& a, const std::string& input, const st
     arguments.emplace_back(option);
     arguments.insert(arguments.end(), values->begin(), values->end());
   }
-  const int status = run_plot_script("fields3d", arguments);
+  const int status = render::run_plot_script("fields3d", arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
   return status;
 }
@@ -75,13 +76,13 @@ struct ScriptKind {
 };
 
 int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
-  if (a.dpi < 20 || a.dpi > 600) throw BadPlotInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
+  if (a.dpi < 20 || a.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
   const std::string input = locate_run_file(a.input, kind.input_file);
   const std::string out = a.out.empty() ? output_beside(a.input, kind.output_file) : a.out;
   if (std::string_view(kind.name) == "fields") {
     if (hdf5_dimension(input) == 3) return plot_isosurface(a, input, out);
     for (const char* option : kIsosurfaceOptions) {
-      if (was_given(a, option)) throw BadPlotInput(fmt::format("{} is for 3D runs only", option));
+      if (was_given(a, option)) throw BadInput(fmt::format("{} is for 3D runs only", option));
     }
   }
   std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi)};
@@ -98,7 +99,7 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
   if (std::string_view(kind.name) == "phase") arguments.insert(arguments.end(), {"--max-points", std::to_string(a.max_points)});
   if (kind.window_help != nullptr) arguments.insert(arguments.end(), {"--window", a.window});
   if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
-  const int status = run_plot_script(kind.script, arguments);
+  const int status = render::run_plot_script(kind.script, arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
   return status;
 }

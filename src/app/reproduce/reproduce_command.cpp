@@ -16,7 +16,7 @@
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
-#include "app/plot/plot_inputs.hpp"
+#include "render/plot_scripts.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 #include "reproduce/report.hpp"
@@ -101,7 +101,7 @@ void run_point_analyses(const Study& study, Scale scale, const GroupRun& g, cons
       }
       fmt::print("reproduce: {}/{}/{}: granule {}\n", study.name, g.group, p.name, fmt::join(analysis.arguments, " "));
       std::fflush(stdout);
-      if (run_program(argv) != 0)
+      if (render::run_program(argv) != 0)
         fmt::print(stderr, "granule reproduce: warning: the analysis of {} failed (see {})\n", p.name, log);
     }
   }
@@ -115,7 +115,7 @@ void draw_figures(const fs::path& out, const StudyOutcome& outcome) {
   for (const Figure& f : outcome.figures) {
     const fs::path data = out / "figures" / (f.name + ".json"), picture = out / "figures" / (f.name + ".png");
     write_file_atomically(data.string(), figure_json(f));
-    if (run_plot_script("reproduce_figure", {data.string(), "--out", picture.string()}) != 0) {
+    if (render::run_plot_script("reproduce_figure", {data.string(), "--out", picture.string()}) != 0) {
       fmt::print(stderr, "granule reproduce: warning: figure {} was not drawn\n", f.name);
     }
   }

@@ -14,7 +14,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/interrupt_signals.hpp"
-#include "app/plot/plot_run_picture.hpp"
+#include "render/snapshot_picture.hpp"
 #include "app/run/run_console.hpp"
 #include "driver/run_directory.hpp"
 #include "driver/run_session.hpp"
@@ -218,7 +218,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
     const std::string collapse = reason == StopReason::kInelasticCollapse ? collapse_report(*session, out) : std::string{};
     session.reset();  // the picture reads the last frame back: of 10^8 disks, not beside the engine
     try {
-      if (frames > 0) fmt::print("picture: {}\n", render_run_picture(out));
+      if (frames > 0) fmt::print("picture: {}\n", render::render_run_picture(out));
     } catch (const IoError&) {
       throw;  // the disk failed: exit 4, the data files written before stay complete
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
