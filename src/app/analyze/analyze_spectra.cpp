@@ -2,50 +2,34 @@
 // each chosen frame (thesis §2.2, §3.2.1): the power maps R, P_x, P_y (, P_z), P, their annulus (2D) or
 // shell (3D) integrals against |k| and averages S(k) with the statistical band of an ideal gas, and the
 // dominant wavevector against L0 = l/√(1−ẽ²) (1.1) with its significance against uncorrelated positions
-// (spectra/mode_significance.hpp).  3D maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
+// (spectra/mode_significance.hpp), computed by io/spectra_from_snapshots.hpp.  3D maps are stored on the
+// plane k_z = 0 only.  Schema: docs/spectra.md.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <memory>
 #include <new>
-#include <numbers>
 #include <optional>
-#include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
-#include "granule/version.hpp"
-#include "io/atomic_file.hpp"
+#include "app/exit_codes.hpp"
 #include "io/frame_selection.hpp"
 #include "io/io_error.hpp"
-#include "io/snapshot_file.hpp"
-#include "io/spectra_file.hpp"
-#include "app/analyze/spectra_console.hpp"
-#include "spectra/dominant_mode.hpp"
-#include "spectra/power_spectra.hpp"
-#include "spectra/shell_structure_factor.hpp"
+#include "io/spectra_from_snapshots.hpp"
 
 namespace granule::app {
 
 namespace {
 
-using namespace granule::spectra;
-using namespace granule::spectra_file;
-
-constexpr int kMaxModeLimit = 2048;
-constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
-constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
+using spectra::kDefaultFalseAlarm;
 
 struct SpectraOptions {
   std::string snapshots;
   std::string frames = "all";
-  std::optional<int> max_mode;  // default kDefaultMaxMode (2D), kDefaultMaxMode3d (3D)
+  std::optional<int> max_mode;  // default: default_max_mode of the run's dimension
   std::optional<double> dk;
   std::string method = "fast";
   bool subtract_shear = false;
@@ -83,64 +67,38 @@ int analyze_spectra(const SpectraOptions& options) {
   } catch (const BadInput& error) {
     return bad_spectra_input(error.what());
   }
-  const SnapshotMetadata& metadata = first.metadata;
-  const int dimension = metadata.system.dimension;
-  const double length_z = metadata.system.length_z;
-  const int max_mode = options.max_mode.value_or(dimension == 3 ? kDefaultMaxMode3d : kDefaultMaxMode);
-  const int max_mode_limit = dimension == 3 ? kMaxModeLimit3d : kMaxModeLimit;
-  if (max_mode < 1 || max_mode > max_mode_limit) {
-    return bad_spectra_input(fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit, dimension, max_mode));
+  const SystemParams& system = first.metadata.system;
+  const int dimension = system.dimension;
+  const int max_mode = options.max_mode.value_or(default_max_mode(dimension));
+  if (max_mode < 1 || max_mode > max_mode_limit(dimension)) {
+    return bad_spectra_input(
+        fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit(dimension), dimension, max_mode));
   }
-  const ShearFrame box{metadata.system.length_x, metadata.system.length_y, metadata.system.shear_velocity};
-  if (options.subtract_shear && !box.sheared()) {
+  if (options.subtract_shear && !ShearFrame{system.length_x, system.length_y, system.shear_velocity}.sheared()) {
     return bad_spectra_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
-  TransformOptions transform;
-  transform.max_mode = max_mode;
-  transform.method = options.method == "exact" ? SpectralMethod::exact : SpectralMethod::fast;
-  transform.subtract_shear_profile = options.subtract_shear;
-  const double dk = options.dk.value_or(default_annulus_width(lattice_for_frame(box, 0.0, dimension, length_z)));
-  const double radius = complete_radius_at_any_strain(box, max_mode, dimension, length_z);
-  const std::string csv_path = !options.csv.empty() ? options.csv
-                               : std::filesystem::path(options.out).replace_extension("").string() + "_dominant.csv";
-  const double l0 = cluster_length(metadata.system);
+  SpectraFromSnapshots analysis({options.snapshots, options.method, max_mode, options.dk, options.subtract_shear,
+                                options.exclude_ky_axis, options.false_alarm, options.out, options.csv},
+                               first);
 
-  // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
+  // 2. Frame by frame, saying what each dominant mode is worth.
   try {
-    std::unique_ptr<SpectraFile> file;
-    const SpectraFileSettings settings{options.snapshots, options.method, options.subtract_shear, options.exclude_ky_axis,
-                                       options.false_alarm};
-    std::string csv = dominant_csv_header();
-    std::vector<SignificanceTally> tallies(fields_of(dimension).size());
-    fmt::print("{}\n", describe_comparison(metadata.system, l0, options.false_alarm));
+    const double l0 = analysis.cluster_length();
+    fmt::print("{}\n", spectra::describe_comparison(system, l0, options.false_alarm));
+    const auto fields = spectra_file::fields_of(dimension);
     for (const std::int64_t index : frames) {
-      const SnapshotRead snapshot = index == 0 ? first : read_snapshot(options.snapshots, index);
-      const SnapshotFrame& frame = snapshot.frame;
-      const ReciprocalLattice lattice = lattice_for_frame(box, frame.shear_offset, dimension, length_z);
-      const PowerMaps maps = power_maps(transform_fields(frame.particles, box, lattice, transform), options.exclude_ky_axis);
-      const AnnulusSpectrum annulus = annulus_sums(maps, dk, radius);
-      if (!file) file = std::make_unique<SpectraFile>(options.out, settings, metadata, transform, dk, annulus);
-      std::vector<DominantMode> dominant;
-      for (const FieldChoice& field : fields_of(dimension)) {
-        const DominantMode& d =
-            dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.noise(maps), options.false_alarm));
-        csv += dominant_csv_row(index, frame, field.name, d, l0);
-      }
-      file->append(index, frame, maps, annulus, dominant, l0);
-      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.clock.time, frame.collisions_per_particle);
-      for (std::size_t f = 0; f < dominant.size(); ++f) {
-        const char* name = fields_of(dimension)[f].name;
-        if (name == std::string("R") || name == std::string("P")) {
-          fmt::print("  {}\n", describe_dominant(name, dominant[f], l0, options.false_alarm));
+      const FrameSpectra frame = analysis.add_frame(index);
+      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.time, frame.collisions_per_particle);
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f].name == std::string("R") || fields[f].name == std::string("P")) {
+          fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, options.false_alarm));
         }
-        tallies[f].add(dominant[f], l0);
       }
     }
-    for (std::size_t f = 0; f < tallies.size(); ++f) {
-      fmt::print("{}\n", tallies[f].summary(fields_of(dimension)[f].name, options.false_alarm));
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, options.false_alarm));
     }
-    write_file_atomically(csv_path, csv);
-    file->publish();
+    analysis.publish();
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
     throw;
   } catch (const std::bad_alloc&) {  // exit 5, by main
@@ -149,7 +107,7 @@ int analyze_spectra(const SpectraOptions& options) {
     fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
     return 1;
   }
-  fmt::print("wrote {} and {}\n", options.out, csv_path);
+  fmt::print("wrote {} and {}\n", options.out, analysis.csv_path());
   return 0;
 }
 
