@@ -1,13 +1,14 @@
 #include "app/run/run_console.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
+#include "driver/run_directory.hpp"
 #include "granule/version.hpp"
 
 namespace granule::app {
@@ -74,18 +75,8 @@ std::string collision_model_text(const SystemParams& s) {
 }
 
 std::string files_written_text(const std::string& out, std::filesystem::file_time_type since) {
-  namespace fs = std::filesystem;
-  std::vector<std::string> files;
-  std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(out, error); !error && it != fs::recursive_directory_iterator();
-       it.increment(error)) {
-    if (!it->is_regular_file(error) || it->last_write_time(error) < since) continue;
-    files.push_back(fs::relative(it->path(), out, error).string());
-  }
-  std::sort(files.begin(), files.end());
-  std::string list;
-  for (const std::string& file : files) list += (list.empty() ? "" : ", ") + file;
-  return fmt::format("files written in {}: {}", out, list.empty() ? "none" : list);
+  const std::vector<std::string> files = driver::files_written_since(out, since);
+  return fmt::format("files written in {}: {}", out, files.empty() ? "none" : fmt::format("{}", fmt::join(files, ", ")));
 }
 
 }  // namespace granule::app
