@@ -16,7 +16,7 @@
 
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
-#include "app/interrupt_signals.hpp"
+#include "driver/interrupt_signals.hpp"
 #include "io/io_error.hpp"
 #include "reproduce/study_evaluation.hpp"
 
@@ -24,6 +24,7 @@ namespace granule::app {
 
 namespace {
 
+using driver::InterruptSignals;
 using namespace granule::reproduce;
 
 struct ReproduceOptions {

@@ -12,8 +12,8 @@
 #include <optional>
 
 #include "app/exit_codes.hpp"
-#include "app/interrupt_signals.hpp"
 #include "app/run/run_console.hpp"
+#include "driver/interrupt_signals.hpp"
 #include "driver/run_beginnings.hpp"
 #include "io/io_error.hpp"
 #include "render/snapshot_picture.hpp"
@@ -22,6 +22,7 @@ namespace granule::app {
 
 namespace {
 
+using driver::InterruptSignals;
 using driver::RunSession;
 using driver::stop_text;
 

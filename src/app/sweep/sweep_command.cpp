@@ -12,7 +12,7 @@
 
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
-#include "app/interrupt_signals.hpp"
+#include "driver/interrupt_signals.hpp"
 #include "sweep/array_tasks.hpp"
 #include "sweep/point_runs.hpp"
 #include "sweep/results_table.hpp"
@@ -25,6 +25,7 @@ namespace granule::app {
 
 namespace {
 
+using driver::InterruptSignals;
 using namespace granule::sweep;
 
 struct SweepOptions {
