@@ -24,19 +24,11 @@ namespace granule::app {
 
 namespace {
 
-using spectra::kDefaultFalseAlarm;
-
+// The analysis asked (its max_mode below), the frames and the modes as given.
 struct SpectraOptions {
-  std::string snapshots;
+  SpectraRequest request;
   std::string frames = "all";
   std::optional<int> max_mode;  // default: default_max_mode of the run's dimension
-  std::optional<double> dk;
-  std::string method = "fast";
-  bool subtract_shear = false;
-  bool exclude_ky_axis = false;
-  std::string out = "spectra.h5";
-  std::string csv;
-  double false_alarm = kDefaultFalseAlarm;
 };
 
 int bad_spectra_input(const std::string& message) {
@@ -45,21 +37,22 @@ int bad_spectra_input(const std::string& message) {
 }
 
 int analyze_spectra(const SpectraOptions& options) {
+  SpectraRequest request = options.request;
   // 1. Everything that can be wrong with the input is found before anything is written.
-  if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
-    return bad_spectra_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
+  if (request.dk && !(std::isfinite(*request.dk) && *request.dk > 0.0)) {
+    return bad_spectra_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *request.dk));
   }
-  if (!(options.false_alarm > 0.0 && options.false_alarm < 1.0)) {
-    return bad_spectra_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", options.false_alarm));
+  if (!(request.false_alarm > 0.0 && request.false_alarm < 1.0)) {
+    return bad_spectra_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", request.false_alarm));
   }
-  if (options.method != "fast" && options.method != "exact") {
-    return bad_spectra_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
+  if (request.method != "fast" && request.method != "exact") {
+    return bad_spectra_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", request.method));
   }
   SnapshotRead first;
   try {
-    first = read_snapshot(options.snapshots, 0);
+    first = read_snapshot(request.snapshots, 0);
   } catch (const std::exception& error) {
-    return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
+    return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", request.snapshots, error.what()));
   }
   std::vector<std::int64_t> frames;
   try {
@@ -74,29 +67,28 @@ int analyze_spectra(const SpectraOptions& options) {
     return bad_spectra_input(
         fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit(dimension), dimension, max_mode));
   }
-  if (options.subtract_shear && !ShearFrame{system.length_x, system.length_y, system.shear_velocity}.sheared()) {
+  if (request.subtract_shear && !ShearFrame{system.length_x, system.length_y, system.shear_velocity}.sheared()) {
     return bad_spectra_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
-  SpectraFromSnapshots analysis({options.snapshots, options.method, max_mode, options.dk, options.subtract_shear,
-                                options.exclude_ky_axis, options.false_alarm, options.out, options.csv},
-                               first);
+  request.max_mode = max_mode;
+  SpectraFromSnapshots analysis(request, first);
 
   // 2. Frame by frame, saying what each dominant mode is worth.
   try {
     const double l0 = analysis.cluster_length();
-    fmt::print("{}\n", spectra::describe_comparison(system, l0, options.false_alarm));
+    fmt::print("{}\n", spectra::describe_comparison(system, l0, request.false_alarm));
     const auto fields = spectra_file::fields_of(dimension);
     for (const std::int64_t index : frames) {
       const FrameSpectra frame = analysis.add_frame(index);
       fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.time, frame.collisions_per_particle);
       for (std::size_t f = 0; f < fields.size(); ++f) {
         if (fields[f].name == std::string("R") || fields[f].name == std::string("P")) {
-          fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, options.false_alarm));
+          fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, request.false_alarm));
         }
       }
     }
     for (std::size_t f = 0; f < fields.size(); ++f) {
-      fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, options.false_alarm));
+      fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
     }
     analysis.publish();
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
@@ -107,7 +99,7 @@ int analyze_spectra(const SpectraOptions& options) {
     fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
     return 1;
   }
-  fmt::print("wrote {} and {}\n", options.out, analysis.csv_path());
+  fmt::print("wrote {} and {}\n", request.out, analysis.csv_path());
   return 0;
 }
 
@@ -119,26 +111,26 @@ void add_analyze_spectra(CLI::App& analyze) {
       "spectra", "Fourier spectra of the mass and momentum densities (thesis §2.2, §3.2.1), 2D or 3D runs: power maps, "
                  "annulus (shell) sums against |k| and the dominant wavevector against L0 = l/sqrt(1-e^2). Schema: "
                  "docs/spectra.md");
-  command->add_option("snapshots", options->snapshots, "snapshots.h5 of a run")->required();
+  command->add_option("snapshots", options->request.snapshots, "snapshots.h5 of a run")->required();
   command->add_option("--frames", options->frames,
                       "Frames: 'all', indices (negative from the end) and slices start:stop[:step], comma-separated")
       ->default_val("all");
   command->add_option("--max-mode", options->max_mode,
                       "Modes |l|, |m| (, |n|) <= M of the allowed lattice k = l k1 + m k2 (+ n k3); default 64 in 2D "
                       "(at most 2048), 32 in 3D (at most 256)");
-  command->add_option("--dk", options->dk, "Annulus (shell) width (default 2*pi/max(Lx, Ly (, Lz)))");
-  command->add_option("--method", options->method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
+  command->add_option("--dk", options->request.dk, "Annulus (shell) width (default 2*pi/max(Lx, Ly (, Lz)))");
+  command->add_option("--method", options->request.method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
       ->default_val("fast");
-  command->add_flag("--subtract-shear", options->subtract_shear,
+  command->add_flag("--subtract-shear", options->request.subtract_shear,
                     "Momentum relative to the linear shear profile, p'(k) of (3.17) (Lees-Edwards runs)");
-  command->add_flag("--exclude-ky-axis", options->exclude_ky_axis,
+  command->add_flag("--exclude-ky-axis", options->request.exclude_ky_axis,
                     "Leave the k_y axis (l = 0, and n = 0 in 3D) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
-  command->add_option("--out", options->out, "Output HDF5 file")->default_val("spectra.h5");
-  command->add_option("--csv", options->csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
-  command->add_option("--false-alarm", options->false_alarm,
+  command->add_option("--out", options->request.out, "Output HDF5 file")->default_val("spectra.h5");
+  command->add_option("--csv", options->request.csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
+  command->add_option("--false-alarm", options->request.false_alarm,
                       "False-alarm probability below which a dominant mode is significant against uncorrelated "
                       "positions, over all modes compared (0 < level < 1)")
-      ->default_val(kDefaultFalseAlarm);
+      ->default_val(spectra::kDefaultFalseAlarm);
   command->callback([options] { throw CLI::RuntimeError(analyze_spectra(*options)); });
 }
 

@@ -1,8 +1,8 @@
 // `granule plot spacetime`: ρ(y, t), V_x(y, t), T(y, t) as three shaded panels, time across and y
 // up (thesis Figs 4.7–4.8: dense streamwise layers converging into a central plug), with U(t)
 // above when the snapshots store it.  The arrays are assembled by io/spacetime_file (the rows by
-// analysis/spacetime_profiles), written as HDF5 beside the picture, and drawn by
-// python/granule_plots/spacetime.py.
+// analysis/spacetime_profiles), written as HDF5 beside the picture and drawn by
+// render/spacetime_picture.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -10,10 +10,9 @@
 #include <optional>
 
 #include "app/plot/plot_command.hpp"
-#include "io/atomic_file.hpp"
 #include "io/run_files.hpp"
 #include "io/spacetime_file.hpp"
-#include "render/plot_scripts.hpp"
+#include "render/spacetime_picture.hpp"
 
 namespace granule::app {
 
@@ -51,13 +50,7 @@ int plot_spacetime(const SpacetimeArguments& a) {
   const std::string out = a.out.empty() ? output_beside(a.input, "spacetime.png") : a.out;
   const std::string data = a.data.empty() ? fs::path(out).replace_extension(".h5").string() : a.data;
   if (data == out) throw BadInput(fmt::format("--data {} is the picture itself", data));
-  // The arrays are published only with the picture drawn from them.
-  const std::string partial = data + ".partial";
-  const RemovedAtExit cleanup{partial};
-  write_spacetime_partial(data, profiles);
-  const int status = render::run_plot_script("spacetime", {partial, "--out", out, "--dpi", std::to_string(a.dpi)});
-  if (status != 0) return status;
-  publish_file(partial, data);
+  if (const int status = render::draw_spacetime(profiles, out, data, a.dpi); status != 0) return status;
   fmt::print("wrote {} and {} ({} frames × {} rows, from {})\n", out, data, profiles.t.size(), profiles.y.size(),
              profiles.source);
   return 0;

@@ -3,9 +3,9 @@
 // when the sweep varies the restitution of sheared runs).
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <memory>
 
+#include "app/command_line.hpp"
 #include "app/plot/plot_command.hpp"
 #include "io/run_files.hpp"
 #include "render/plot_scripts.hpp"
@@ -33,7 +33,7 @@ int plot_sweep(const SweepPlotArguments& a) {
                                      "--y",
                                      a.y,
                                      "--granule",
-                                     std::filesystem::read_symlink("/proc/self/exe").string()};
+                                     own_executable()};
   if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
   const int status = render::run_plot_script("sweep", arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
