@@ -44,33 +44,13 @@ int bad_input(const std::string& message) {
   return kExitBadInput;
 }
 
-// "C±W", "C+-W" or "C+/-W" with W > 0.
-std::optional<ValueWindow> parse_window(std::string text) {
-  for (const std::string separator : {"±", "+/-", "+-"}) {
-    const std::size_t at = text.find(separator);
-    if (at == std::string::npos) continue;
-    try {
-      std::size_t used_center = 0, used_width = 0;
-      const std::string center = text.substr(0, at), width = text.substr(at + separator.size());
-      ValueWindow w{std::stod(center, &used_center), std::stod(width, &used_width)};
-      if (used_center != center.size() || used_width != width.size() || !std::isfinite(w.center) ||
-          !(w.half_width > 0.0) || !std::isfinite(w.half_width))
-        return std::nullopt;
-      return w;
-    } catch (const std::exception&) {
-      return std::nullopt;
-    }
-  }
-  return std::nullopt;
-}
-
 int analyze_f1(const F1CommandOptions& o) {
   // 1. Every input error is found before anything is read at length or written.
   std::vector<ValueWindow> densities, temperatures;
   for (const auto& [texts, parsed, name] : {std::tuple{&o.density_windows, &densities, "--density-window"},
                                             std::tuple{&o.temperature_windows, &temperatures, "--temperature-window"}}) {
     for (const std::string& text : *texts) {
-      const auto w = parse_window(text);
+      const auto w = parse_value_window(text);
       if (!w) return bad_input(fmt::format("{} '{}' must be CENTER±HALFWIDTH (or CENTER+-HALFWIDTH) with HALFWIDTH > 0", name, text));
       parsed->push_back(*w);
     }
