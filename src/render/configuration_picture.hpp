@@ -1,10 +1,10 @@
 // Pictures of a particle configuration (thesis Figs 2.2, 2.3, 3.4, 3.10): every disk drawn to scale
 // in the box (y up), coloured by the direction of its velocity (the hue wheel of Fig 1.1's inset),
 // by its speed, by its spin ω_z (rough grains, thesis Fig C.4) or by a coarse-grained cell field
-// (analysis/named_cell_fields.hpp), with the coarse-grained velocity field V(r) of
-// §1.4.3 drawn as arrows from the cell centres.  Disks crossing the box edges are drawn with their
-// periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls
-// (Fig C.5) are drawn as lines along the faces they stand on.
+// (analysis/named_cell_fields.hpp), with the coarse-grained velocity field V(r) of §1.4.3 drawn as
+// arrows from the cell centres.  Disks crossing the box edges are drawn with their periodic /
+// Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls (Fig C.5) are
+// drawn as lines along the faces they stand on.
 #pragma once
 
 #include <array>

@@ -10,7 +10,6 @@
 #include <fmt/ranges.h>
 
 #include <chrono>
-#include <filesystem>
 #include <functional>
 #include <memory>
 
