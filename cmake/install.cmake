@@ -24,7 +24,7 @@ install(TARGETS ${GRANULE_EXPORTED_LIBRARIES} EXPORT granuleTargets ARCHIVE DEST
 install(DIRECTORY src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/granule FILES_MATCHING PATTERN "*.hpp"
         PATTERN "app" EXCLUDE PATTERN "sweep" EXCLUDE PATTERN "render" EXCLUDE)
 install(FILES ${CMAKE_BINARY_DIR}/generated/granule/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/granule)
-# The binary finds them at <prefix>/bin/../${GRANULE_INSTALL_PYTHON_DIR} (src/app/plot/plot_inputs.cpp).
+# The binary finds them at <prefix>/bin/../${GRANULE_INSTALL_PYTHON_DIR} (src/render/plot_scripts.cpp).
 install(DIRECTORY python/granule_plots DESTINATION ${GRANULE_INSTALL_PYTHON_DIR} PATTERN "__pycache__" EXCLUDE)
 
 install(EXPORT granuleTargets NAMESPACE granule:: DESTINATION ${GRANULE_CMAKE_DIR})

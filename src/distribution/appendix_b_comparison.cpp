@@ -22,6 +22,21 @@ std::vector<AppendixBEntry> thesis_windows_in_run_units(const SystemParams& run)
   return mapped;
 }
 
+bool add_thesis_windows(const SystemParams& run, std::vector<ValueWindow>& densities, std::vector<ValueWindow>& temperatures) {
+  const std::vector<AppendixBEntry> mapped = thesis_windows_in_run_units(run);
+  const auto add_unique = [](std::vector<ValueWindow>& list, ValueWindow w) {
+    for (const ValueWindow& known : list) {
+      if (known.center == w.center) return;
+    }
+    list.push_back(w);
+  };
+  for (const AppendixBEntry& e : mapped) {
+    add_unique(densities, {e.density, e.density_half_width});
+    add_unique(temperatures, {e.temperature, e.temperature_half_width});
+  }
+  return !mapped.empty();
+}
+
 std::optional<ThesisMatch> nearest_thesis_window(const SystemParams& run, const WindowResult& window) {
   std::optional<ThesisMatch> best;
   double best_distance = 0.0;

@@ -15,6 +15,11 @@ namespace granule::distribution {
 // 0.8 or 0.9, or the run is not sheared).
 std::vector<AppendixBEntry> thesis_windows_in_run_units(const SystemParams& run);
 
+// Adds Appendix B's 4 ρ × 4 T windows of the run's ẽ, in the run's units (docs/f1.md, "Units"), to
+// `densities` and `temperatures`, each centre once.  False, and nothing added, when the run has
+// none (above).
+bool add_thesis_windows(const SystemParams& run, std::vector<ValueWindow>& densities, std::vector<ValueWindow>& temperatures);
+
 // The Appendix B window (run units) nearest to a window of the run, in units of its half widths;
 // none when the run's ẽ has no table.
 struct ThesisMatch {

@@ -1,8 +1,30 @@
 #include "distribution/window_sampling.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "analysis/cell_fields.hpp"
 
 namespace granule::distribution {
+
+std::optional<ValueWindow> parse_value_window(const std::string& text) {
+  for (const std::string separator : {"±", "+/-", "+-"}) {
+    const std::size_t at = text.find(separator);
+    if (at == std::string::npos) continue;
+    try {
+      std::size_t used_center = 0, used_width = 0;
+      const std::string center = text.substr(0, at), width = text.substr(at + separator.size());
+      ValueWindow w{std::stod(center, &used_center), std::stod(width, &used_width)};
+      if (used_center != center.size() || used_width != width.size() || !std::isfinite(w.center) ||
+          !(w.half_width > 0.0) || !std::isfinite(w.half_width))
+        return std::nullopt;
+      return w;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
 
 void sample_configuration(const ParticleState& state, const ShearFrame& frame, const SamplingOptions& options,
                           std::vector<WindowSamples>& windows) {

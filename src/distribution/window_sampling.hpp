@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "analysis/field_grid.hpp"
@@ -20,6 +22,9 @@ struct ValueWindow {
   double half_width = 0.0;
   bool contains(double value) const { return value >= center - half_width && value <= center + half_width; }
 };
+
+// A window written "C±W", "C+-W" or "C+/-W" with W > 0 (docs/f1.md); none when the text is not one.
+std::optional<ValueWindow> parse_value_window(const std::string& text);
 
 struct WindowSamples {
   ValueWindow density;      // particles per unit area

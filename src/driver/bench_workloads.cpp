@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "cells/cell_grid.hpp"
 #include "engine/simulation.hpp"
@@ -103,6 +104,34 @@ constexpr BenchWorkload kWorkloads3d[] = {
 std::span<const BenchWorkload> bench_workloads(int dimension) {
   if (dimension == 3) return kWorkloads3d;
   return kWorkloads2d;
+}
+
+std::vector<BenchCase> bench_cases(const std::string& dimensions, bool observers, const std::vector<std::string>& only) {
+  const auto selected = [&](const BenchWorkload& w) {
+    return only.empty() || std::any_of(only.begin(), only.end(), [&](const std::string& part) {
+             return std::string_view(w.name).find(part) != std::string_view::npos;
+           });
+  };
+  std::vector<BenchCase> cases;
+  const auto add = [&](const BenchWorkload& w, int dimension, BenchMeasurements measure) {
+    if (selected(w)) cases.push_back({w, dimension, measure});
+  };
+  const std::vector<int> chosen = dimensions == "2" ? std::vector<int>{2} : dimensions == "3" ? std::vector<int>{3}
+                                                                                             : std::vector<int>{2, 3};
+  for (int dimension : chosen) {
+    for (const BenchWorkload& w : bench_workloads(dimension)) add(w, dimension, BenchMeasurements::kNone);
+  }
+  if (!observers) return cases;
+  for (int dimension : chosen) {
+    const std::span<const BenchWorkload> workloads = bench_workloads(dimension);
+    for (const BenchWorkload& w : {workloads[2], workloads[3]}) {  // free cooling, Lees–Edwards
+      for (BenchMeasurements m : {BenchMeasurements::kDiagnostics, BenchMeasurements::kStressField,
+                                  BenchMeasurements::kImpacts, BenchMeasurements::kFreePaths}) {
+        add(w, dimension, m);
+      }
+    }
+  }
+  return cases;
 }
 
 // In 2D the rate comes from the thesis's fit (3.1); in 3D from the dilute balance of viscous heating

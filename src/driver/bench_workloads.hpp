@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "engine/system_params.hpp"
 
@@ -33,6 +34,18 @@ std::span<const BenchWorkload> bench_workloads(int dimension);
 // The measurements a run makes by default, added one at a time (their cost); each includes those
 // before it.
 enum class BenchMeasurements { kNone, kDiagnostics, kStressField, kImpacts, kFreePaths };
+
+// One timing of `granule bench`: a workload of disks or spheres with the measurements added.
+struct BenchCase {
+  BenchWorkload workload;
+  int dimension = 2;
+  BenchMeasurements measure = BenchMeasurements::kNone;
+};
+
+// What `granule bench` times, in order: every workload of the `dimensions` asked ("2", "3" or
+// "both"), then, with `observers`, the free-cooling and Lees–Edwards workloads with each default
+// measurement added in turn; only the workloads whose names contain one of `only` (all when empty).
+std::vector<BenchCase> bench_cases(const std::string& dimensions, bool observers, const std::vector<std::string>& only);
 
 struct BenchSettings {
   std::int64_t particles = 100000;

@@ -1,9 +1,13 @@
 #include "driver/measurement_replay.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
 
+#include "driver/run_directory.hpp"
 #include "driver/run_measurements.hpp"
+#include "driver/run_start.hpp"
 #include "observers/schedule.hpp"
 #include "driver/stop_loop.hpp"
 #include "io/atomic_file.hpp"
@@ -41,6 +45,22 @@ ReplayOutcome replay(const RunConfig& config, const SnapshotRead& snapshot, doub
 }
 
 }  // namespace
+
+ReplayStart replay_start(const std::string& run_dir, std::int64_t frame, const std::vector<std::string>& overrides) {
+  const ConfigResult parsed = load_config_file(run_dir + "/config.toml", overrides);
+  if (!parsed.config) throw ConfigError(parsed.error);
+  ReplayStart start{*parsed.config, {}};
+  try {
+    start.snapshot = read_snapshot(run_dir + "/snapshots.h5", frame);
+  } catch (const std::exception& error) {
+    throw RunDirectoryRefused(fmt::format("--frame {}: cannot read {}/snapshots.h5: {}", frame, run_dir, error.what()));
+  }
+  const SystemParams &system = start.config.system, &theirs = start.snapshot.metadata.system;
+  if (theirs.dimension != system.dimension || theirs.particles != system.particles || theirs.diameter != system.diameter) {
+    throw RunDirectoryRefused(fmt::format("{}/snapshots.h5 does not match its config.toml", run_dir));
+  }
+  return start;
+}
 
 ReplayOutcome replay_with_measurements(const RunConfig& config, const SnapshotRead& snapshot,
                                        double collisions_per_particle,

@@ -5,12 +5,24 @@
 #pragma once
 
 #include <functional>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "io/config.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule::driver {
+
+// What a replay starts from: the run's config.toml in `run_dir` with `overrides` (the settings of
+// [fields] and [collisions]) and its snapshot frame `frame` (negative counts from the end), checked
+// to belong together.  A config refused throws ConfigError; a frame that cannot be read, or
+// snapshots of another system, RunDirectoryRefused.
+struct ReplayStart {
+  RunConfig config;
+  SnapshotRead snapshot;
+};
+ReplayStart replay_start(const std::string& run_dir, std::int64_t frame, const std::vector<std::string>& overrides);
 
 struct ReplayOutcome {
   std::string error;                 // non-empty: the engine grid was refused, nothing was run

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -111,6 +112,18 @@ std::string existing_run_output(const std::string& out, const std::string& name)
     if (fs::exists(out + "/" + name + suffix)) return out + "/" + name + suffix;
   }
   return {};
+}
+
+std::vector<std::string> files_written_since(const std::string& out, fs::file_time_type since) {
+  std::vector<std::string> files;
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(out, error); !error && it != fs::recursive_directory_iterator();
+       it.increment(error)) {
+    if (!it->is_regular_file(error) || it->last_write_time(error) < since) continue;
+    files.push_back(fs::relative(it->path(), out, error).string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 BranchedOutputs branch_run_outputs(const std::string& out, std::int64_t frame, double c, bool fields) {

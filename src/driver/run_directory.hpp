@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,7 +16,9 @@
 
 namespace granule::driver {
 
-// A directory a new run may not write into (the message names it and what to do instead).
+// A run directory a run may not begin in: a new run's directory with another run's files, or a
+// continued run whose checkpoint or snapshots cannot be read or do not belong to its config.toml
+// (the message names it and what to do instead).
 struct RunDirectoryRefused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -43,6 +46,9 @@ struct BranchedOutputs {
   FrameContinuation kept;                   // what the measurements' files keep
 };
 BranchedOutputs branch_run_outputs(const std::string& out, std::int64_t frame, double c, bool fields);
+
+// The regular files under `out` (paths relative to it, sorted) modified since `since`.
+std::vector<std::string> files_written_since(const std::string& out, std::filesystem::file_time_type since);
 
 // The estimated peak memory of a run [bytes].
 double estimated_run_bytes(const RunConfig& config, const CellGrid& grid);

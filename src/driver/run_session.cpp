@@ -198,6 +198,14 @@ nlohmann::json RunSession<D>::finish(StopReason reason) {
   return summary;
 }
 
+template <int D>
+double RunSession<D>::mean_free_time() const {
+  for (auto it = samples().rbegin(); it != samples().rend(); ++it) {
+    if (it->collision_rate > 0.0) return 0.5 / it->collision_rate;
+  }
+  return sim_.collisions() > 0 ? 0.5 * sim_.time() / sim_.collisions_per_particle() : 0.0;
+}
+
 template class RunSession<2>;
 template class RunSession<3>;
 

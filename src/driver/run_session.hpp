@@ -52,6 +52,8 @@ class RunSession final : public StopClient<D> {
   const Simulation<D>& simulation() const { return run_.engine(); }
   const std::vector<DiagnosticsSample>& samples() const { return run_.samples(); }
   std::int64_t snapshot_frames() const { return snapshots_ ? snapshots_->frames() : 0; }
+  // The mean free time per particle over the last sampled interval (each collision involves two).
+  double mean_free_time() const;
 
   std::int64_t next_collisions() const override { return snapshotting_.next_collisions; }
   double next_time() const override { return snapshotting_.next_time; }

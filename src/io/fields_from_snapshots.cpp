@@ -1,9 +1,28 @@
 #include "io/fields_from_snapshots.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+
 #include "analysis/cell_fields.hpp"
 #include "io/fields_file.hpp"
 
 namespace granule {
+
+FieldGrid fields_from_snapshots_grid(const SystemParams& s, const std::vector<int>& cells) {
+  const bool three_dimensional = s.dimension == 3;
+  FieldGrid grid = three_dimensional ? default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles)
+                                     : default_field_grid(s.length_x, s.length_y, s.particles);
+  if (cells.empty()) return grid;
+  if (cells.size() != (three_dimensional ? 3u : 2u) ||
+      std::any_of(cells.begin(), cells.end(), [](int n) { return n < 1 || n > (1 << 14); })) {
+    throw BadInput(fmt::format("--cells expects {} with integers in [1, 16384]", three_dimensional ? "nx,ny,nz" : "nx,ny"));
+  }
+  grid.nx = cells[0];
+  grid.ny = cells[1];
+  if (three_dimensional) grid.nz = cells[2];
+  return grid;
+}
 
 void write_fields_from_snapshots(const FieldsFromSnapshots& r) {
   const SystemParams& s = r.metadata.system;

@@ -6,8 +6,10 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "analysis/field_grid.hpp"
+#include "io/bad_input.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule {
@@ -21,6 +23,10 @@ struct FieldsFromSnapshots {
   std::string out;                    // the fields file written (atomically)
   std::string version;                // of the program, recorded in the file
 };
+
+// The grid of the fields: about 20 particles per cell (analysis/field_grid.hpp), or `cells` NX NY
+// (NZ in 3D), each in [1, 16384]; other cells throw BadInput.
+FieldGrid fields_from_snapshots_grid(const SystemParams& system, const std::vector<int>& cells);
 
 void write_fields_from_snapshots(const FieldsFromSnapshots& request);
 

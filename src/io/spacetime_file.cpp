@@ -1,11 +1,16 @@
 #include "io/spacetime_file.hpp"
 
+#include <fmt/format.h>
 #include <hdf5.h>
 
+#include <filesystem>
+
 #include "analysis/cell_fields.hpp"
+#include "analysis/field_grid.hpp"
 #include "granule/version.hpp"
 #include "io/fields_file.hpp"
 #include "io/hdf5_util.hpp"
+#include "io/run_files.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule {
@@ -75,6 +80,41 @@ void read_shear_protocol(const std::string& snapshots_path, SpacetimeProfiles& p
   if (profiles.shear_velocity.empty()) return;
   profiles.protocol_t = h5::read_frame_series(snapshots_path, "time");
   profiles.shear_offset = h5::read_frame_series(snapshots_path, "shear_offset");
+}
+
+SpacetimeSource spacetime_source(const std::string& input, const std::string& chosen) {
+  namespace fs = std::filesystem;
+  std::string from = chosen;
+  if (from.empty()) {
+    if (fs::is_directory(input)) {
+      from = fs::exists(fs::path(input) / "fields.h5") || fs::exists(fs::path(input) / "fields.h5.partial") ? "fields"
+                                                                                                          : "snapshots";
+    } else {
+      from = hdf5_format(input) == "granule-snapshots" ? "snapshots" : "fields";
+    }
+  }
+  if (from != "fields" && from != "snapshots") throw BadInput(fmt::format("--from {} is not one of fields, snapshots", from));
+  const bool fields = from == "fields";
+  const std::string path = locate_run_file(input, fields ? "fields.h5" : "snapshots.h5");
+  require_hdf5_format(path, fields ? "granule-fields" : "granule-snapshots",
+                      fields ? "`granule run` or `granule analyze fields`" : "`granule run`");
+  return {from, path};
+}
+
+SpacetimeProfiles read_spacetime_profiles(const SpacetimeSource& source, const std::string& group, std::optional<int> rows,
+                                          bool relative) {
+  SpacetimeProfiles profiles;
+  if (source.from == "fields") {
+    profiles = spacetime_from_fields(source.path, group);
+    const std::string snapshots = snapshots_beside(source.path);
+    if (!snapshots.empty()) read_shear_protocol(snapshots, profiles);
+  } else {
+    const SnapshotMetadata m = read_snapshot(source.path, 0).metadata;
+    const int binned = rows.value_or(default_field_grid(m.system.length_x, m.system.length_y, m.system.particles).ny);
+    profiles = spacetime_from_snapshots(source.path, binned, relative);
+  }
+  if (profiles.t.empty()) throw BadInput(fmt::format("{} has no complete frame yet", source.path));
+  return profiles;
 }
 
 void write_spacetime_partial(const std::string& path, const SpacetimeProfiles& p) {

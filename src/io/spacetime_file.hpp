@@ -3,6 +3,7 @@
 // for the pictures of `granule plot spacetime`.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "analysis/spacetime_profiles.hpp"
@@ -21,6 +22,21 @@ SpacetimeProfiles spacetime_from_snapshots(const std::string& snapshots_path, in
 // Fills the protocol series from a snapshot file's per-frame `shear_velocity` and `shear_offset`
 // (left empty when the file has no `shear_velocity`).
 void read_shear_protocol(const std::string& snapshots_path, SpacetimeProfiles& profiles);
+
+// The file a run's profiles come from (a run directory, a fields file or a snapshot file): `from`
+// "fields" (fields.h5) or "snapshots" (snapshots.h5), or empty: fields.h5 when the run has one.
+// Throws BadInput for another `from`, a missing file or a file of another format.
+struct SpacetimeSource {
+  std::string from;  // "fields" or "snapshots"
+  std::string path;
+};
+SpacetimeSource spacetime_source(const std::string& run_dir_or_file, const std::string& from);
+
+// The profiles of every complete frame of the source: the `group` maps of a fields file, with U(t)
+// from the snapshots beside it, or the snapshots binned into `rows` rows (default: the rows of the
+// default coarse-graining grid).  Throws BadInput when no frame is complete yet.
+SpacetimeProfiles read_spacetime_profiles(const SpacetimeSource& source, const std::string& group,
+                                          std::optional<int> rows, bool relative);
 
 // Writes the arrays as HDF5 (format `granule-spacetime`, schema in docs/plots.md) to
 // `<path>.partial`, closed; the caller publishes or removes it.  Throws IoError.

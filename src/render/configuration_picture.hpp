@@ -1,9 +1,10 @@
 // Pictures of a particle configuration (thesis Figs 2.2, 2.3, 3.4, 3.10): every disk drawn to scale
 // in the box (y up), coloured by the direction of its velocity (the hue wheel of Fig 1.1's inset),
-// by its speed, by its spin ω_z (rough grains, thesis Fig C.4) or by a coarse-grained cell field, with the coarse-grained velocity field V(r) of
-// §1.4.3 drawn as arrows from the cell centres.  Disks crossing the box edges are drawn with their
-// periodic / Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls
-// (Fig C.5) are drawn as lines along the faces they stand on.
+// by its speed, by its spin ω_z (rough grains, thesis Fig C.4) or by a coarse-grained cell field
+// (analysis/named_cell_fields.hpp), with the coarse-grained velocity field V(r) of §1.4.3 drawn as
+// arrows from the cell centres.  Disks crossing the box edges are drawn with their periodic /
+// Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls (Fig C.5) are
+// drawn as lines along the faces they stand on.
 #pragma once
 
 #include <array>
@@ -14,6 +15,7 @@
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/field_grid.hpp"
+#include "analysis/named_cell_fields.hpp"
 #include "boundary/shear_frame.hpp"
 #include "engine/system_params.hpp"
 #include "render/raster_image.hpp"
@@ -24,10 +26,6 @@ enum class DiskColoring { kDirection, kSpeed, kField, kSpin, kNone };
 
 // "direction", "speed", "field", "spin", "none".
 std::optional<DiskColoring> parse_disk_coloring(std::string_view name);
-
-// The cell fields a picture can colour by ("density", "temperature", ...); nullptr if unknown.
-const std::vector<double>* cell_field_by_name(const CellFields& fields, std::string_view name);
-const std::vector<std::string>& cell_field_names();
 
 struct ConfigurationScene {
   const ParticleState& particles;  // lab frame, inside the box
@@ -53,10 +51,6 @@ struct PictureOptions {
   // disks (σ well below a pixel) stay visible.
   double min_disk_radius_px = 0.6;
 };
-
-// The automatic coarse-graining grid: about 40 disks per cell, between 4 and 64 cells a side
-// (32 × 32 for the thesis's N = 40000, as in Figs 2.2–2.3).
-FieldGrid automatic_picture_grid(std::int64_t particles, double length_x, double length_y);
 
 // Throws std::invalid_argument for an unknown field name, a width outside [16, 20000], or spin
 // colours for smooth grains.

@@ -20,6 +20,13 @@ std::string scale_name(Scale scale) {
   return "";
 }
 
+std::optional<Scale> scale_named(const std::string& name) {
+  for (Scale s : {Scale::tiny, Scale::small, Scale::medium, Scale::thesis}) {
+    if (scale_name(s) == name) return s;
+  }
+  return std::nullopt;
+}
+
 double summary_number(const PointOutputs& point, const char* key) {
   const nlohmann::json* node = &point.summary;
   std::string path = key;
@@ -68,6 +75,14 @@ const std::vector<Study>& all_studies() {
       appendix_c_study(),
   };
   return studies;
+}
+
+std::vector<const Study*> studies_named(const std::string& what) {
+  std::vector<const Study*> chosen;
+  for (const Study& s : all_studies()) {
+    if (what == "all" || what == s.name) chosen.push_back(&s);
+  }
+  return chosen;
 }
 
 }  // namespace granule::reproduce

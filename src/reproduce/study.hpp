@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ namespace granule::reproduce {
 enum class Scale { tiny, small, medium, thesis };
 
 std::string scale_name(Scale scale);
+// The scale of that name (scale_name), none if unknown.
+std::optional<Scale> scale_named(const std::string& name);
 
 // The value a study uses at each scale.
 template <typename T>
@@ -88,6 +91,8 @@ struct Study {
 
 // The catalogue, in the report's order (catalogue.cpp).
 const std::vector<Study>& all_studies();
+// The study named `what`, or every study for "all"; empty when no study has that name.
+std::vector<const Study*> studies_named(const std::string& what);
 
 // The run's number `key` of summary.json (NaN when absent).
 double summary_number(const PointOutputs& point, const char* key);

@@ -2,13 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
 #include "io/timeseries_csv.hpp"
 #include "sweep/point_record.hpp"
+#include "sweep/point_runs.hpp"
 #include "sweep/results_table.hpp"
 
 namespace granule::reproduce {
@@ -27,6 +30,61 @@ std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, S
   }
   return groups;
 }
+
+namespace {
+
+// Runs all points of one group: K at a time locally, or over the MPI ranks.
+using GroupRunner = std::function<void(const sweep::SweepRun&)>;
+
+// Runs every group's points (skipping finished ones) with `run_all`.  Returns false when a signal
+// stopped it.
+bool run_groups(const std::vector<GroupRun>& groups, const GroupRunner& run_all, bool announce, const std::string& granule,
+                const volatile std::sig_atomic_t* interrupt) {
+  std::size_t total = 0;
+  for (const GroupRun& g : groups) total += g.spec.points.size();
+  std::size_t done = 0;
+  for (const GroupRun& g : groups) {
+    if (*interrupt != 0) return false;
+    if (announce) {
+      fmt::print("reproduce: [{}/{} runs] {}/{}: {} point(s)\n", done, total, g.study->name, g.group, g.spec.points.size());
+      std::fflush(stdout);
+    }
+    run_all(sweep::SweepRun{granule, g.dir, &g.spec, interrupt});
+    done += g.spec.points.size();
+  }
+  return *interrupt == 0;
+}
+
+}  // namespace
+
+bool run_groups_locally(const std::vector<GroupRun>& groups, int jobs, const std::string& granule,
+                        const volatile std::sig_atomic_t* interrupt) {
+  for (const GroupRun& g : groups) sweep::prepare_sweep_directory(g.dir, g.spec);
+  const GroupRunner local = [&](const sweep::SweepRun& run) {
+    std::vector<std::size_t> indices(run.spec->points.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = k;
+    sweep::run_points(run, indices, jobs, true);
+  };
+  return run_groups(groups, local, true, granule, interrupt);
+}
+
+#ifdef GRANULE_HAVE_MPI
+bool run_groups_over_mpi(const std::vector<GroupRun>& groups, const sweep::MpiSession& mpi, const std::string& granule,
+                         const volatile std::sig_atomic_t* interrupt) {
+  const sweep::MpiWorld& world = mpi.world();
+  if (world.rank == 0) {
+    for (const GroupRun& g : groups) sweep::prepare_sweep_directory(g.dir, g.spec);
+  }
+  mpi.broadcast(0);  // every directory exists before any rank runs a point
+  // Every rank ends a group before any starts the next: a worker's first request of the next
+  // group must not reach rank 0 while it still hands out the points of this one.
+  const GroupRunner over_ranks = [&](const sweep::SweepRun& run) {
+    sweep::run_points_over_mpi(run, world);
+    mpi.broadcast(0);
+  };
+  return run_groups(groups, over_ranks, world.rank == 0, granule, interrupt);
+}
+#endif
 
 GroupReading read_group(const GroupRun& g) {
   const sweep::SweepTally tally = sweep::write_results(g.dir, g.spec);

@@ -3,6 +3,7 @@
 // group left behind (records, time series, summaries), read back for the study's claims.
 #pragma once
 
+#include <csignal>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +12,9 @@
 #include "reproduce/study.hpp"
 #include "sweep/sweep_directory.hpp"
 #include "sweep/sweep_spec.hpp"
+#ifdef GRANULE_HAVE_MPI
+#include "sweep/mpi_points.hpp"
+#endif
 
 namespace granule::reproduce {
 
@@ -26,6 +30,19 @@ struct GroupRun {
 // that does not parse is a bug of the study (std::logic_error), not the user's input.
 std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, Scale scale,
                                      const std::filesystem::path& out);
+
+// Runs every group's points, skipping those that finished: `jobs` at a time on this machine as
+// child processes of the executable `granule` (`announce`: one line per group first).  False when
+// a signal (`*interrupt` non-zero) stopped it.
+bool run_groups_locally(const std::vector<GroupRun>& groups, int jobs, const std::string& granule,
+                        const volatile std::sig_atomic_t* interrupt);
+
+#ifdef GRANULE_HAVE_MPI
+// The same over the ranks of `mpi` (sweep/mpi_points.hpp): rank 0 prepares the directories and
+// hands out the points, and every rank ends a group before any starts the next.
+bool run_groups_over_mpi(const std::vector<GroupRun>& groups, const sweep::MpiSession& mpi, const std::string& granule,
+                         const volatile std::sig_atomic_t* interrupt);
+#endif
 
 struct GroupReading {
   GroupOutputs outputs;

@@ -3,6 +3,7 @@
 // evaluated on.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,20 @@ struct PredictionTable {
   std::vector<std::string> derived_names;
   std::vector<double> derived;
 };
+
+// The first derived value or entry of the table that is infinite or NaN, named by its derived name
+// or column; none when every number is finite.  Inputs inside their ranges may still combine into
+// a result beyond double precision (say ν = 1e-300 with σ = 1e30).
+struct NonFiniteEntry {
+  std::string name;
+  double value = 0.0;
+};
+std::optional<NonFiniteEntry> first_non_finite(const PredictionTable& table);
+
+// The table as text: the summary lines as `# ` lines above aligned columns (6 significant digits).
+std::string table_text(const PredictionTable& table);
+// The table as CSV: the header and rows only (10 significant digits), so that any CSV reader takes it.
+std::string table_csv(const PredictionTable& table);
 
 // Evenly spaced values from lo to hi inclusive (one value when points == 1).
 std::vector<double> linspace(double lo, double hi, int points);

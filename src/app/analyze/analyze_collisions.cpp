@@ -10,8 +10,8 @@
 #include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "driver/measurement_replay.hpp"
-#include "io/config.hpp"
-#include "io/snapshot_file.hpp"
+#include "driver/run_directory.hpp"
+#include "driver/run_start.hpp"
 
 namespace granule::app {
 
@@ -25,35 +25,26 @@ struct CollisionsOptions {
   std::string out;
 };
 
+int bad_collisions_input(const std::string& message) {
+  fmt::print(stderr, "granule analyze collisions: error: {}\n", message);
+  return kExitBadInput;
+}
+
 int analyze_collisions(const CollisionsOptions& o) {
-  const ConfigResult parsed = load_config_file(o.run_dir + "/config.toml", o.overrides);
-  if (!parsed.config) {
-    fmt::print(stderr, "granule analyze collisions: error: {}\n", parsed.error);
-    return kExitBadInput;
-  }
-  const RunConfig& config = *parsed.config;
-  const SystemParams& system = config.system;
-  SnapshotRead snapshot;
+  driver::ReplayStart start;
   try {
-    snapshot = read_snapshot(o.run_dir + "/snapshots.h5", o.frame);
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "granule analyze collisions: error: --frame {}: cannot read {}/snapshots.h5: {}\n", o.frame,
-               o.run_dir, error.what());
-    return kExitBadInput;
+    start = driver::replay_start(o.run_dir, o.frame, o.overrides);
+  } catch (const driver::ConfigError& refused) {
+    return bad_collisions_input(refused.what());
+  } catch (const driver::RunDirectoryRefused& refused) {
+    return bad_collisions_input(refused.what());
   }
-  const SystemParams& theirs = snapshot.metadata.system;
-  if (theirs.dimension != system.dimension || theirs.particles != system.particles || theirs.diameter != system.diameter) {
-    fmt::print(stderr, "granule analyze collisions: error: {}/snapshots.h5 does not match its config.toml\n", o.run_dir);
-    return kExitBadInput;
-  }
+  const SnapshotRead& snapshot = start.snapshot;
   const driver::ReplayOutcome replay =
-      driver::replay_with_measurements(config, snapshot, o.collisions_per_particle, [&](double c_start) {
+      driver::replay_with_measurements(start.config, snapshot, o.collisions_per_particle, [&](double c_start) {
         return o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, c_start) : o.out;
       });
-  if (!replay.error.empty()) {
-    fmt::print(stderr, "granule analyze collisions: error: {}\n", replay.error);
-    return kExitBadInput;
-  }
+  if (!replay.error.empty()) return bad_collisions_input(replay.error);
   fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
              snapshot.frame.collisions_per_particle, replay.collisions_per_particle, replay.out);
   return 0;

@@ -11,9 +11,9 @@
 
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
-#include "distribution/appendix_b_comparison.hpp"
-#include "distribution/window_sampling.hpp"
+#include "distribution/f1_report.hpp"
 #include "io/f1_file.hpp"
+#include "io/f1_from_snapshots.hpp"
 #include "io/f1_thesis_csv.hpp"
 #include "io/io_error.hpp"
 #include "io/snapshot_file.hpp"
@@ -44,51 +44,13 @@ int bad_input(const std::string& message) {
   return kExitBadInput;
 }
 
-// "C±W", "C+-W" or "C+/-W" with W > 0.
-std::optional<ValueWindow> parse_window(std::string text) {
-  for (const std::string separator : {"±", "+/-", "+-"}) {
-    const std::size_t at = text.find(separator);
-    if (at == std::string::npos) continue;
-    try {
-      std::size_t used_center = 0, used_width = 0;
-      const std::string center = text.substr(0, at), width = text.substr(at + separator.size());
-      ValueWindow w{std::stod(center, &used_center), std::stod(width, &used_width)};
-      if (used_center != center.size() || used_width != width.size() || !std::isfinite(w.center) ||
-          !(w.half_width > 0.0) || !std::isfinite(w.half_width))
-        return std::nullopt;
-      return w;
-    } catch (const std::exception&) {
-      return std::nullopt;
-    }
-  }
-  return std::nullopt;
-}
-
-std::string fits_summary(const WindowResult& r) {
-  const auto word = [](const FitReport& f) { return f.converged ? "converged" : "NOT converged (" + f.status + ")"; };
-  return fmt::format("phi* {}, psi* {}, series {}; h* within thesis tolerance: {}", word(r.estimate.once.speed.report),
-                     word(r.estimate.once.angular.report), word(r.estimate.series.report),
-                     r.quality.within_tolerance() ? "yes" : "no");
-}
-
-// One console line comparing the window's b₀⁽¹⁾ with Appendix B's in the run's units, with the
-// dimensionless √(2T) b₀⁽¹⁾ beside it.
-std::string describe_thesis_comparison(const ThesisMatch& match, const WindowResult& window) {
-  const AppendixBEntry& e = match.entry;
-  const double b1 = window.estimate.series.mean[1], error = window.errors.series.mean[1];
-  return fmt::format("  Appendix B {}at rho {:.4g}, T {:.4g} (thesis units mapped to this run's): b0^(1) = {:.4g}, "
-                     "sqrt(2T) b0^(1) = {:.3g}; here {:.4g} ± {:.2g}, sqrt(2T) b0^(1) = {:.3g} (ratio {:.3g})",
-                     match.same_window ? "" : "(nearest window) ", e.density, e.temperature, e.b1,
-                     std::sqrt(2.0 * e.temperature) * e.b1, b1, error, window.speed_scale * b1, b1 / e.b1);
-}
-
 int analyze_f1(const F1CommandOptions& o) {
   // 1. Every input error is found before anything is read at length or written.
   std::vector<ValueWindow> densities, temperatures;
   for (const auto& [texts, parsed, name] : {std::tuple{&o.density_windows, &densities, "--density-window"},
                                             std::tuple{&o.temperature_windows, &temperatures, "--temperature-window"}}) {
     for (const std::string& text : *texts) {
-      const auto w = parse_window(text);
+      const auto w = parse_value_window(text);
       if (!w) return bad_input(fmt::format("{} '{}' must be CENTER±HALFWIDTH (or CENTER+-HALFWIDTH) with HALFWIDTH > 0", name, text));
       parsed->push_back(*w);
     }
@@ -110,28 +72,12 @@ int analyze_f1(const F1CommandOptions& o) {
   }
   const SystemParams& system = first.metadata.system;
   if (o.thesis_windows) {
-    // Appendix B's 4 ρ × 4 T windows of the run's ẽ, in the run's units (docs/f1.md, "Units").
-    const std::vector<AppendixBEntry> mapped = thesis_windows_in_run_units(system);
-    if (mapped.empty()) {
+    if (!add_thesis_windows(system, densities, temperatures)) {
       return bad_input(fmt::format("--thesis-windows needs a Lees–Edwards run with restitution 0.6, 0.7, 0.8 or 0.9 "
                                    "(Appendix B's); this one has ẽ = {:g}, U = {:g}", system.restitution,
                                    system.shear_velocity));
     }
-    const auto add_unique = [](std::vector<ValueWindow>& list, ValueWindow w) {
-      for (const ValueWindow& known : list) {
-        if (known.center == w.center) return;
-      }
-      list.push_back(w);
-    };
-    for (const AppendixBEntry& e : mapped) {
-      add_unique(densities, {e.density, e.density_half_width});
-      add_unique(temperatures, {e.temperature, e.temperature_half_width});
-    }
-    const ThesisUnitMap map = appendix_b_unit_map(system);
-    fmt::print("Appendix B windows in this run's units: lengths × {:.4g}, velocities × {:.4g} of the thesis's "
-               "(N = 2e5, L = 1, U = 100, sigma = {:.4g}); this box is {:.4g} sigma wide, the thesis's {:.4g}\n",
-               map.length, map.velocity, AppendixBSystem::diameter(), system.length_x / system.diameter,
-               AppendixBSystem::box / AppendixBSystem::diameter());
+    fmt::print("{}\n", describe_thesis_units(system));
   }
   if (densities.empty() || temperatures.empty()) {
     return bad_input("give --density-window and --temperature-window (each at least once), or --thesis-windows");
@@ -154,24 +100,18 @@ int analyze_f1(const F1CommandOptions& o) {
     sampling.grid.nx = nx;
     sampling.grid.ny = ny;
   }
-  const ShearFrame frame{system.length_x, system.length_y, system.shear_velocity};
-  if (o.subtract_shear_profile && !frame.sheared())
+  if (o.subtract_shear_profile && !ShearFrame{system.length_x, system.length_y, system.shear_velocity}.sheared())
     return bad_input("--subtract-shear-profile needs a Lees–Edwards run (this one has U = 0)");
   sampling.subtract_shear_profile = o.subtract_shear_profile;
 
   // 2. Sample every window in every frame from --from-frame on, then analyse each window.
-  std::vector<WindowSamples> windows;
-  for (const ValueWindow& rho : densities)
-    for (const ValueWindow& t : temperatures) windows.push_back(WindowSamples{rho, t, {}, {}, {}, {}, {}});
   F1RunDescription run{o.snapshots, first.metadata, sampling.grid.nx, sampling.grid.ny, o.from_frame,
                        first.frames - o.from_frame, o.subtract_shear_profile, o.profile_angle,
                        o.profile_speed.value_or(0.0), f};
   std::vector<WindowResult> results;
   try {
-    for (std::int64_t index = o.from_frame; index < first.frames; ++index) {
-      const SnapshotRead snapshot = index == 0 ? first : read_snapshot(o.snapshots, index);
-      sample_configuration(snapshot.frame.particles, frame, sampling, windows);
-    }
+    const std::vector<WindowSamples> windows =
+        sample_snapshot_windows(o.snapshots, first, o.from_frame, sampling, densities, temperatures);
     fmt::print("sampled {} frames ({} to {}) on {} x {} cells\n", run.frames_used, o.from_frame, first.frames - 1,
                sampling.grid.nx, sampling.grid.ny);
     for (const WindowSamples& w : windows) {
@@ -180,13 +120,7 @@ int analyze_f1(const F1CommandOptions& o) {
         fmt::print(stderr, "granule analyze f1: warning: {}\n", r.warning);
         continue;
       }
-      const SineSeries& b = r.estimate.series;
-      fmt::print("rho {:g}±{:g}, T {:g}±{:g}: {} samples, T = {:.4g}; b0 = ({:.4g}, {:.4g}, {:.4g}); "
-                 "Tr tau direct/once/twice = {:.4g}/{:.4g}/{:.4g}; {}\n",
-                 w.density.center, w.density.half_width, w.temperature.center, w.temperature.half_width, r.samples,
-                 r.temperature, b.mean[0], b.mean[1], b.mean[2], r.estimate.direct.trace(),
-                 r.estimate.once_integrals.moment.trace(), r.estimate.twice_integrals.moment.trace(),
-                 fits_summary(r));
+      fmt::print("{}\n", describe_window(r));
       if (const auto match = nearest_thesis_window(system, r)) fmt::print("{}\n", describe_thesis_comparison(*match, r));
       results.push_back(std::move(r));
     }

@@ -4,17 +4,14 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
 #include <memory>
 #include <optional>
 
-#include "analysis/field_grid.hpp"
 #include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "granule/version.hpp"
 #include "io/fields_from_snapshots.hpp"
+#include "io/frame_selection.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule::app {
@@ -38,31 +35,23 @@ int analyze_fields(const FieldsOptions& o) {
     fmt::print(stderr, "granule analyze fields: error: cannot read {}: {}\n", o.snapshots, error.what());
     return kExitBadInput;
   }
-  const SystemParams& s = head.metadata.system;
-  const std::int64_t first = o.first < 0 ? head.frames + o.first : o.first;
-  const std::int64_t last = o.last < 0 ? head.frames + o.last : o.last;
-  if (first < 0 || last >= head.frames || first > last) {
+  const std::optional<FrameRange> frames = resolve_frame_range(o.first, o.last, head.frames);
+  if (!frames) {
     fmt::print(stderr, "granule analyze fields: error: --first {} --last {} select no frames: the file has frames 0..{} "
                        "(negative indices count from the end)\n", o.first, o.last, head.frames - 1);
     return kExitBadInput;
   }
-  const bool three_dimensional = s.dimension == 3;
-  FieldGrid grid = three_dimensional ? default_field_grid_3d(s.length_x, s.length_y, s.length_z, s.particles)
-                                     : default_field_grid(s.length_x, s.length_y, s.particles);
-  if (!o.cells.empty()) {
-    const std::size_t axes = three_dimensional ? 3 : 2;
-    if (o.cells.size() != axes || std::any_of(o.cells.begin(), o.cells.end(), [](int n) { return n < 1 || n > (1 << 14); })) {
-      fmt::print(stderr, "granule analyze fields: error: --cells expects {} with integers in [1, 16384]\n",
-                 three_dimensional ? "nx,ny,nz" : "nx,ny");
-      return kExitBadInput;
-    }
-    grid.nx = o.cells[0];
-    grid.ny = o.cells[1];
-    if (three_dimensional) grid.nz = o.cells[2];
+  FieldGrid grid;
+  try {
+    grid = fields_from_snapshots_grid(head.metadata.system, o.cells);
+  } catch (const BadInput& error) {
+    fmt::print(stderr, "granule analyze fields: error: {}\n", error.what());
+    return kExitBadInput;
   }
+  const auto [first, last] = *frames;
   write_fields_from_snapshots({o.snapshots, head.metadata, first, last, grid, o.subtract_shear, o.out, kVersion});
   fmt::print("fields of frames {}..{} on {} × {}{} cells written to {}\n", first, last, grid.nx, grid.ny,
-             three_dimensional ? fmt::format(" × {}", grid.nz) : "", o.out);
+             grid.dimension == 3 ? fmt::format(" × {}", grid.nz) : "", o.out);
   return 0;
 }
 

@@ -2,97 +2,34 @@
 // each chosen frame (thesis §2.2, §3.2.1): the power maps R, P_x, P_y (, P_z), P, their annulus (2D) or
 // shell (3D) integrals against |k| and averages S(k) with the statistical band of an ideal gas, and the
 // dominant wavevector against L0 = l/√(1−ẽ²) (1.1) with its significance against uncorrelated positions
-// (spectra/mode_significance.hpp).  3D maps are stored on the plane k_z = 0 only.  Schema: docs/spectra.md.
+// (spectra/mode_significance.hpp), computed by io/spectra_from_snapshots.hpp.  3D maps are stored on the
+// plane k_z = 0 only.  Schema: docs/spectra.md.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <memory>
 #include <new>
-#include <numbers>
 #include <optional>
-#include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
-#include "granule/version.hpp"
-#include "io/atomic_file.hpp"
+#include "app/exit_codes.hpp"
+#include "io/frame_selection.hpp"
 #include "io/io_error.hpp"
-#include "io/snapshot_file.hpp"
-#include "io/spectra_file.hpp"
-#include "app/analyze/spectra_console.hpp"
-#include "spectra/dominant_mode.hpp"
-#include "spectra/power_spectra.hpp"
-#include "spectra/shell_structure_factor.hpp"
+#include "io/spectra_from_snapshots.hpp"
 
 namespace granule::app {
 
 namespace {
 
-using namespace granule::spectra;
-using namespace granule::spectra_file;
-
-constexpr int kMaxModeLimit = 2048;
-constexpr int kMaxModeLimit3d = 256;  // an n³ FFT grid of 16 n³ bytes per pair of fields: 20 GB at M = 256
-constexpr int kDefaultMaxMode = 64, kDefaultMaxMode3d = 32;
-
+// The analysis asked (its max_mode below), the frames and the modes as given.
 struct SpectraOptions {
-  std::string snapshots;
+  SpectraRequest request;
   std::string frames = "all";
-  std::optional<int> max_mode;  // default kDefaultMaxMode (2D), kDefaultMaxMode3d (3D)
-  std::optional<double> dk;
-  std::string method = "fast";
-  bool subtract_shear = false;
-  bool exclude_ky_axis = false;
-  std::string out = "spectra.h5";
-  std::string csv;
-  double false_alarm = kDefaultFalseAlarm;
+  std::optional<int> max_mode;  // default: default_max_mode of the run's dimension
 };
-
-// "all", or comma-separated items: an index (negative counts from the end) or a Python-style slice
-// start:stop[:step] with optional parts.  Returns the frame indices, or an error message.
-std::vector<std::int64_t> parse_frames(const std::string& spec, std::int64_t total, std::string& error) {
-  std::vector<std::int64_t> frames;
-  const auto resolve = [&](std::int64_t i) { return i < 0 ? total + i : i; };
-  std::size_t start = 0;
-  while (error.empty() && start <= spec.size()) {
-    const std::size_t comma = std::min(spec.find(',', start), spec.size());
-    const std::string item = spec.substr(start, comma - start);
-    start = comma + 1;
-    try {
-      if (item == "all") {
-        for (std::int64_t i = 0; i < total; ++i) frames.push_back(i);
-      } else if (item.find(':') == std::string::npos) {
-        std::size_t used = 0;
-        const std::int64_t i = resolve(std::stoll(item, &used));
-        if (used != item.size() || i < 0 || i >= total) throw std::out_of_range(item);
-        frames.push_back(i);
-      } else {
-        std::vector<std::string> parts;
-        for (std::size_t p = 0, colon = 0; colon != std::string::npos; p = colon + 1) {
-          colon = item.find(':', p);
-          parts.push_back(item.substr(p, colon == std::string::npos ? std::string::npos : colon - p));
-        }
-        if (parts.size() > 3) throw std::invalid_argument(item);
-        const std::int64_t step = parts.size() == 3 && !parts[2].empty() ? std::stoll(parts[2]) : 1;
-        if (step <= 0) throw std::invalid_argument(item);
-        const std::int64_t first = parts[0].empty() ? 0 : std::clamp<std::int64_t>(resolve(std::stoll(parts[0])), 0, total);
-        const std::int64_t last = parts[1].empty() ? total : std::clamp<std::int64_t>(resolve(std::stoll(parts[1])), 0, total);
-        for (std::int64_t i = first; i < last; i += step) frames.push_back(i);
-      }
-    } catch (const std::exception&) {
-      error = fmt::format("--frames: '{}' is not a frame index in [-{}, {}) or a slice start:stop[:step] (step > 0)",
-                          item, total, total);
-    }
-  }
-  if (error.empty() && frames.empty()) error = fmt::format("--frames '{}' selects no frame (the file has {})", spec, total);
-  return frames;
-}
 
 int bad_spectra_input(const std::string& message) {
   fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
@@ -100,83 +37,60 @@ int bad_spectra_input(const std::string& message) {
 }
 
 int analyze_spectra(const SpectraOptions& options) {
+  SpectraRequest request = options.request;
   // 1. Everything that can be wrong with the input is found before anything is written.
-  if (options.dk && !(std::isfinite(*options.dk) && *options.dk > 0.0)) {
-    return bad_spectra_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *options.dk));
+  if (request.dk && !(std::isfinite(*request.dk) && *request.dk > 0.0)) {
+    return bad_spectra_input(fmt::format("--dk must be a positive finite wavenumber (got {})", *request.dk));
   }
-  if (!(options.false_alarm > 0.0 && options.false_alarm < 1.0)) {
-    return bad_spectra_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", options.false_alarm));
+  if (!(request.false_alarm > 0.0 && request.false_alarm < 1.0)) {
+    return bad_spectra_input(fmt::format("--false-alarm must lie in (0, 1) (got {})", request.false_alarm));
   }
-  if (options.method != "fast" && options.method != "exact") {
-    return bad_spectra_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", options.method));
+  if (request.method != "fast" && request.method != "exact") {
+    return bad_spectra_input(fmt::format("--method must be 'fast' or 'exact' (got '{}')", request.method));
   }
   SnapshotRead first;
   try {
-    first = read_snapshot(options.snapshots, 0);
+    first = read_snapshot(request.snapshots, 0);
   } catch (const std::exception& error) {
-    return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", options.snapshots, error.what()));
+    return bad_spectra_input(fmt::format("cannot read snapshots '{}': {}", request.snapshots, error.what()));
   }
-  std::string error;
-  const std::vector<std::int64_t> frames = parse_frames(options.frames, first.frames, error);
-  if (!error.empty()) return bad_spectra_input(error);
-  const SnapshotMetadata& metadata = first.metadata;
-  const int dimension = metadata.system.dimension;
-  const double length_z = metadata.system.length_z;
-  const int max_mode = options.max_mode.value_or(dimension == 3 ? kDefaultMaxMode3d : kDefaultMaxMode);
-  const int max_mode_limit = dimension == 3 ? kMaxModeLimit3d : kMaxModeLimit;
-  if (max_mode < 1 || max_mode > max_mode_limit) {
-    return bad_spectra_input(fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit, dimension, max_mode));
+  std::vector<std::int64_t> frames;
+  try {
+    frames = parse_frame_selection(options.frames, first.frames);
+  } catch (const BadInput& error) {
+    return bad_spectra_input(error.what());
   }
-  const ShearFrame box{metadata.system.length_x, metadata.system.length_y, metadata.system.shear_velocity};
-  if (options.subtract_shear && !box.sheared()) {
+  const SystemParams& system = first.metadata.system;
+  const int dimension = system.dimension;
+  const int max_mode = options.max_mode.value_or(default_max_mode(dimension));
+  if (max_mode < 1 || max_mode > max_mode_limit(dimension)) {
+    return bad_spectra_input(
+        fmt::format("--max-mode must be in [1, {}] for a {}D run (got {})", max_mode_limit(dimension), dimension, max_mode));
+  }
+  if (request.subtract_shear && !ShearFrame{system.length_x, system.length_y, system.shear_velocity}.sheared()) {
     return bad_spectra_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
-  TransformOptions transform;
-  transform.max_mode = max_mode;
-  transform.method = options.method == "exact" ? SpectralMethod::exact : SpectralMethod::fast;
-  transform.subtract_shear_profile = options.subtract_shear;
-  const double dk = options.dk.value_or(default_annulus_width(lattice_for_frame(box, 0.0, dimension, length_z)));
-  const double radius = complete_radius_at_any_strain(box, max_mode, dimension, length_z);
-  const std::string csv_path = !options.csv.empty() ? options.csv
-                               : std::filesystem::path(options.out).replace_extension("").string() + "_dominant.csv";
-  const double l0 = cluster_length(metadata.system);
+  request.max_mode = max_mode;
+  SpectraFromSnapshots analysis(request, first);
 
-  // 2. Frame by frame into <out>.partial; the CSV and the final name only when all frames are done.
+  // 2. Frame by frame, saying what each dominant mode is worth.
   try {
-    std::unique_ptr<SpectraFile> file;
-    const SpectraFileSettings settings{options.snapshots, options.method, options.subtract_shear, options.exclude_ky_axis,
-                                       options.false_alarm};
-    std::string csv = dominant_csv_header();
-    std::vector<SignificanceTally> tallies(fields_of(dimension).size());
-    fmt::print("{}\n", describe_comparison(metadata.system, l0, options.false_alarm));
+    const double l0 = analysis.cluster_length();
+    fmt::print("{}\n", spectra::describe_comparison(system, l0, request.false_alarm));
+    const auto fields = spectra_file::fields_of(dimension);
     for (const std::int64_t index : frames) {
-      const SnapshotRead snapshot = index == 0 ? first : read_snapshot(options.snapshots, index);
-      const SnapshotFrame& frame = snapshot.frame;
-      const ReciprocalLattice lattice = lattice_for_frame(box, frame.shear_offset, dimension, length_z);
-      const PowerMaps maps = power_maps(transform_fields(frame.particles, box, lattice, transform), options.exclude_ky_axis);
-      const AnnulusSpectrum annulus = annulus_sums(maps, dk, radius);
-      if (!file) file = std::make_unique<SpectraFile>(options.out, settings, metadata, transform, dk, annulus);
-      std::vector<DominantMode> dominant;
-      for (const FieldChoice& field : fields_of(dimension)) {
-        const DominantMode& d =
-            dominant.emplace_back(dominant_mode(maps, maps.*field.map, field.noise(maps), options.false_alarm));
-        csv += dominant_csv_row(index, frame, field.name, d, l0);
-      }
-      file->append(index, frame, maps, annulus, dominant, l0);
-      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.clock.time, frame.collisions_per_particle);
-      for (std::size_t f = 0; f < dominant.size(); ++f) {
-        const char* name = fields_of(dimension)[f].name;
-        if (name == std::string("R") || name == std::string("P")) {
-          fmt::print("  {}\n", describe_dominant(name, dominant[f], l0, options.false_alarm));
+      const FrameSpectra frame = analysis.add_frame(index);
+      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.time, frame.collisions_per_particle);
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f].name == std::string("R") || fields[f].name == std::string("P")) {
+          fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, request.false_alarm));
         }
-        tallies[f].add(dominant[f], l0);
       }
     }
-    for (std::size_t f = 0; f < tallies.size(); ++f) {
-      fmt::print("{}\n", tallies[f].summary(fields_of(dimension)[f].name, options.false_alarm));
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
     }
-    write_file_atomically(csv_path, csv);
-    file->publish();
+    analysis.publish();
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
     throw;
   } catch (const std::bad_alloc&) {  // exit 5, by main
@@ -185,7 +99,7 @@ int analyze_spectra(const SpectraOptions& options) {
     fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
     return 1;
   }
-  fmt::print("wrote {} and {}\n", options.out, csv_path);
+  fmt::print("wrote {} and {}\n", request.out, analysis.csv_path());
   return 0;
 }
 
@@ -197,26 +111,26 @@ void add_analyze_spectra(CLI::App& analyze) {
       "spectra", "Fourier spectra of the mass and momentum densities (thesis §2.2, §3.2.1), 2D or 3D runs: power maps, "
                  "annulus (shell) sums against |k| and the dominant wavevector against L0 = l/sqrt(1-e^2). Schema: "
                  "docs/spectra.md");
-  command->add_option("snapshots", options->snapshots, "snapshots.h5 of a run")->required();
+  command->add_option("snapshots", options->request.snapshots, "snapshots.h5 of a run")->required();
   command->add_option("--frames", options->frames,
                       "Frames: 'all', indices (negative from the end) and slices start:stop[:step], comma-separated")
       ->default_val("all");
   command->add_option("--max-mode", options->max_mode,
                       "Modes |l|, |m| (, |n|) <= M of the allowed lattice k = l k1 + m k2 (+ n k3); default 64 in 2D "
                       "(at most 2048), 32 in 3D (at most 256)");
-  command->add_option("--dk", options->dk, "Annulus (shell) width (default 2*pi/max(Lx, Ly (, Lz)))");
-  command->add_option("--method", options->method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
+  command->add_option("--dk", options->request.dk, "Annulus (shell) width (default 2*pi/max(Lx, Ly (, Lz)))");
+  command->add_option("--method", options->request.method, "fast (gridded FFT, ~1e-6 relative) or exact (direct sums)")
       ->default_val("fast");
-  command->add_flag("--subtract-shear", options->subtract_shear,
+  command->add_flag("--subtract-shear", options->request.subtract_shear,
                     "Momentum relative to the linear shear profile, p'(k) of (3.17) (Lees-Edwards runs)");
-  command->add_flag("--exclude-ky-axis", options->exclude_ky_axis,
+  command->add_flag("--exclude-ky-axis", options->request.exclude_ky_axis,
                     "Leave the k_y axis (l = 0, and n = 0 in 3D) out of P_x and P, as the thesis does for p'_x (§3.2.1)");
-  command->add_option("--out", options->out, "Output HDF5 file")->default_val("spectra.h5");
-  command->add_option("--csv", options->csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
-  command->add_option("--false-alarm", options->false_alarm,
+  command->add_option("--out", options->request.out, "Output HDF5 file")->default_val("spectra.h5");
+  command->add_option("--csv", options->request.csv, "Dominant-mode CSV (default: <out stem>_dominant.csv)");
+  command->add_option("--false-alarm", options->request.false_alarm,
                       "False-alarm probability below which a dominant mode is significant against uncorrelated "
                       "positions, over all modes compared (0 < level < 1)")
-      ->default_val(kDefaultFalseAlarm);
+      ->default_val(spectra::kDefaultFalseAlarm);
   command->callback([options] { throw CLI::RuntimeError(analyze_spectra(*options)); });
 }
 

@@ -4,11 +4,9 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "driver/bench_workloads.hpp"
@@ -17,7 +15,6 @@ namespace granule::app {
 
 namespace {
 
-using driver::BenchMeasurements;
 using driver::BenchWorkload;
 
 struct BenchOptions {
@@ -32,18 +29,11 @@ struct BenchOptions {
   std::vector<std::string> only;  // run only the workloads whose names contain one of these
 };
 
-bool selected(const BenchWorkload& w, const BenchOptions& o) {
-  return o.only.empty() || std::any_of(o.only.begin(), o.only.end(), [&](const std::string& part) {
-           return std::string_view(w.name).find(part) != std::string_view::npos;
-         });
-}
-
-void run_workload(const BenchWorkload& w, int dimension, const BenchOptions& o,
-                  BenchMeasurements measure = BenchMeasurements::kNone) {
-  if (!selected(w, o)) return;
-  const driver::BenchSettings settings{dimension == 2 ? o.particles : o.particles_3d, o.collisions_per_particle,
+void run_case(const driver::BenchCase& c, const BenchOptions& o) {
+  const BenchWorkload& w = c.workload;
+  const driver::BenchSettings settings{c.dimension == 2 ? o.particles : o.particles_3d, o.collisions_per_particle,
                                        o.particles_per_cell, o.renumber_every, o.seed};
-  const driver::BenchResult r = driver::run_bench_workload(w, dimension, settings, measure);
+  const driver::BenchResult r = driver::run_bench_workload(w, c.dimension, settings, c.measure);
   if (!r.error.empty()) {
     fmt::print("{:<28} cannot be set up: {}\n", w.name, r.error);
     return;
@@ -51,7 +41,7 @@ void run_workload(const BenchWorkload& w, int dimension, const BenchOptions& o,
   static const char* const kMeasured[] = {"", " +diagnostics", " +stress field", " +impacts", " +free paths"};
   fmt::print("{:<28} {:>8} {:>6.3g} {:>5.3g} {:>11} {:>8.3f} {:>13.4g} {:>12.4g} {:>9.1f}{}\n", w.name, r.particles,
              w.area_fraction, w.restitution, r.collisions, r.seconds, static_cast<double>(r.collisions) / r.seconds,
-             static_cast<double>(r.events) / r.seconds, r.bytes_per_particle, kMeasured[static_cast<int>(measure)]);
+             static_cast<double>(r.events) / r.seconds, r.bytes_per_particle, kMeasured[static_cast<int>(c.measure)]);
 }
 
 }  // namespace
@@ -86,26 +76,8 @@ void add_bench_command(CLI::App& root) {
   command->callback([options] {
     fmt::print("{:<28} {:>8} {:>6} {:>5} {:>11} {:>8} {:>13} {:>12} {:>9}\n", "workload", "N", "nu", "e", "collisions",
                "seconds", "collisions/s", "events/s", "bytes/N");
-    const auto workloads = driver::bench_workloads(2);
-    const auto workloads_3d = driver::bench_workloads(3);
-    if (options->dimensions != "3") {
-      for (const BenchWorkload& w : workloads) run_workload(w, 2, *options);
-    }
-    if (options->dimensions != "2") {
-      for (const BenchWorkload& w : workloads_3d) run_workload(w, 3, *options);
-    }
-    if (!options->observers) return;
-    const BenchMeasurements added[] = {BenchMeasurements::kDiagnostics, BenchMeasurements::kStressField,
-                                       BenchMeasurements::kImpacts, BenchMeasurements::kFreePaths};
-    if (options->dimensions != "3") {
-      for (const BenchWorkload& w : {workloads[2], workloads[3]}) {
-        for (BenchMeasurements m : added) run_workload(w, 2, *options, m);
-      }
-    }
-    if (options->dimensions != "2") {
-      for (const BenchWorkload& w : {workloads_3d[2], workloads_3d[3]}) {
-        for (BenchMeasurements m : added) run_workload(w, 3, *options, m);
-      }
+    for (const driver::BenchCase& c : driver::bench_cases(options->dimensions, options->observers, options->only)) {
+      run_case(c, *options);
     }
   });
 }

@@ -5,60 +5,27 @@
 
 #include <algorithm>
 #include <memory>
-#include <utility>
 
 #include "app/plot/plot_command.hpp"
-#include "app/plot/plot_inputs.hpp"
+#include "io/run_files.hpp"
+#include "render/figure_scripts.hpp"
 
 namespace granule::app {
 
 namespace {
 
+// The figure as asked on the command line (its input the run directory or file given), and the
+// options given.
 struct ScriptArguments {
-  std::string input;
-  std::string out;
-  std::int64_t frame = -1;
-  int dpi = 100;
-  std::string group = "average";
-  std::vector<std::string> quantities;
-  std::string colormap = "gray";
-  std::int64_t max_points = 200000;
+  render::FigureRequest figure;
   std::string window;
-  std::string data;
-  // `fields`: smoothing and frame averages (2D maps and 3D isosurfaces), passed on as given.
-  std::string smooth, average_frames;
-  // `fields` of a 3D run only (density isosurfaces, fields3d.py); passed on as given.
-  std::string level, color_by;
-  std::vector<std::string> view, size;
-  std::vector<std::string> given;  // the options given on the command line
+  std::vector<std::string> given;
 };
 
 constexpr const char* kIsosurfaceOptions[] = {"--level", "--color-by", "--view", "--size"};
 
 bool was_given(const ScriptArguments& a, const char* option) {
   return std::find(a.given.begin(), a.given.end(), option) != a.given.end();
-}
-
-// `granule plot fields` of a 3D fields.h5: the density isosurface coloured by V_x (Figs C.1–C.3).
-int plot_isosurface(const ScriptArguments& a, const std::string& input, const std::string& out) {
-  if (a.quantities.size() > 1) throw BadPlotInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
-  std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi),
-                                     "--group", a.group};
-  if (!a.quantities.empty()) arguments.insert(arguments.end(), {"--quantity", a.quantities[0]});
-  if (was_given(a, "--colormap")) arguments.insert(arguments.end(), {"--colormap", a.colormap});
-  const std::pair<const char*, const std::string*> single[] = {
-      {"--level", &a.level}, {"--smooth", &a.smooth}, {"--average-frames", &a.average_frames}, {"--color-by", &a.color_by}};
-  for (const auto& [option, value] : single) {
-    if (!value->empty()) arguments.insert(arguments.end(), {option, *value});
-  }
-  for (const auto& [option, values] : {std::pair{"--view", &a.view}, std::pair{"--size", &a.size}}) {
-    if (values->empty()) continue;
-    arguments.emplace_back(option);
-    arguments.insert(arguments.end(), values->begin(), values->end());
-  }
-  const int status = run_plot_script("fields3d", arguments);
-  if (status == 0) fmt::print("wrote {}\n", out);
-  return status;
 }
 
 // One matplotlib kind: its script, the run file it reads and its default output name.
@@ -75,31 +42,23 @@ struct ScriptKind {
 };
 
 int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
-  if (a.dpi < 20 || a.dpi > 600) throw BadPlotInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
-  const std::string input = locate_run_file(a.input, kind.input_file);
-  const std::string out = a.out.empty() ? output_beside(a.input, kind.output_file) : a.out;
-  if (std::string_view(kind.name) == "fields") {
-    if (hdf5_dimension(input) == 3) return plot_isosurface(a, input, out);
+  render::FigureRequest r = a.figure;
+  if (r.dpi < 20 || r.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", r.dpi));
+  r.input = locate_run_file(a.figure.input, kind.input_file);
+  if (r.out.empty()) r.out = output_beside(a.figure.input, kind.output_file);
+  if (kind.window_help != nullptr) r.window = a.window;
+  int status = 0;
+  if (std::string_view(kind.name) == "fields" && hdf5_dimension(r.input) == 3) {
+    // The density isosurface coloured by V_x (Figs C.1–C.3).
+    if (r.quantities.size() > 1) throw BadInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
+    status = render::draw_isosurface(r, was_given(a, "--colormap"));
+  } else {
     for (const char* option : kIsosurfaceOptions) {
-      if (was_given(a, option)) throw BadPlotInput(fmt::format("{} is for 3D runs only", option));
+      if (was_given(a, option)) throw BadInput(fmt::format("{} is for 3D runs only", option));
     }
+    status = render::draw_figure(kind.script, r);
   }
-  std::vector<std::string> arguments{input, "--out", out, "--frame", std::to_string(a.frame), "--dpi", std::to_string(a.dpi)};
-  if (std::string_view(kind.name) == "fields") {
-    arguments.insert(arguments.end(), {"--group", a.group, "--colormap", a.colormap});
-    for (const auto& [option, value] : {std::pair{"--smooth", &a.smooth}, std::pair{"--average-frames", &a.average_frames}}) {
-      if (!value->empty()) arguments.insert(arguments.end(), {option, *value});
-    }
-    if (!a.quantities.empty()) {
-      arguments.emplace_back("--quantities");
-      arguments.insert(arguments.end(), a.quantities.begin(), a.quantities.end());
-    }
-  }
-  if (std::string_view(kind.name) == "phase") arguments.insert(arguments.end(), {"--max-points", std::to_string(a.max_points)});
-  if (kind.window_help != nullptr) arguments.insert(arguments.end(), {"--window", a.window});
-  if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
-  const int status = run_plot_script(kind.script, arguments);
-  if (status == 0) fmt::print("wrote {}\n", out);
+  if (status == 0) fmt::print("wrote {}\n", r.out);
   return status;
 }
 
@@ -132,36 +91,36 @@ void add_plot_matplotlib_commands(CLI::App& plot) {
   for (const ScriptKind& kind : kKinds) {
     auto a = std::make_shared<ScriptArguments>();
     CLI::App* c = plot.add_subcommand(kind.name, kind.description);
-    c->add_option("input", a->input, fmt::format("Run directory or {}", kind.input_file))->required();
-    c->add_option("--out", a->out, fmt::format("PNG file (default: {} beside the input)", kind.output_file));
-    c->add_option("--dpi", a->dpi, "Resolution, 20 … 600 dots per inch (the figure size in inches is fixed)")->capture_default_str();
+    c->add_option("input", a->figure.input, fmt::format("Run directory or {}", kind.input_file))->required();
+    c->add_option("--out", a->figure.out, fmt::format("PNG file (default: {} beside the input)", kind.output_file));
+    c->add_option("--dpi", a->figure.dpi, "Resolution, 20 … 600 dots per inch (the figure size in inches is fixed)")->capture_default_str();
     if (kind.has_frames) {
-      c->add_option("--frame", a->frame, "Frame index (negative counts from the end)")->capture_default_str();
+      c->add_option("--frame", a->figure.frame, "Frame index (negative counts from the end)")->capture_default_str();
     }
     if (std::string_view(kind.name) == "fields") {
-      c->add_option("--group", a->group, "average (over the interval ending at the frame) or instant")->capture_default_str();
-      c->add_option("--quantities", a->quantities,
+      c->add_option("--group", a->figure.group, "average (over the interval ending at the frame) or instant")->capture_default_str();
+      c->add_option("--quantities", a->figure.quantities,
                     "Maps to draw (default: density temperature pressure_kinetic pressure_collisional)");
-      c->add_option("--colormap", a->colormap, "matplotlib colormap (gray: lighter for higher, as the thesis; 3D: coolwarm)")
+      c->add_option("--colormap", a->figure.colormap, "matplotlib colormap (gray: lighter for higher, as the thesis; 3D: coolwarm)")
           ->capture_default_str();
-      c->add_option("--level", a->level, "3D runs: the isosurface at this multiple of the field's mean (default 1.5)");
-      c->add_option("--smooth", a->smooth,
+      c->add_option("--level", a->figure.level, "3D runs: the isosurface at this multiple of the field's mean (default 1.5)");
+      c->add_option("--smooth", a->figure.smooth,
                     "Gaussian smoothing, standard deviation in cells, 0 … 16 (default 0 for 2D maps, 1 for 3D isosurfaces)");
-      c->add_option("--average-frames", a->average_frames,
+      c->add_option("--average-frames", a->figure.average_frames,
                     "Average this many frames ending at --frame (Lees-Edwards 2D maps: in the frame moving with the shear; "
                     "default 1)");
-      c->add_option("--color-by", a->color_by, "3D runs: the field colouring the surface (default velocity_x)");
-      c->add_option("--view", a->view, "3D runs: elevation and azimuth in degrees (default 22 -58)")->expected(2);
-      c->add_option("--size", a->size, "3D runs: picture WIDTH HEIGHT in pixels (default 1000 800)")->expected(2);
+      c->add_option("--color-by", a->figure.color_by, "3D runs: the field colouring the surface (default velocity_x)");
+      c->add_option("--view", a->figure.view, "3D runs: elevation and azimuth in degrees (default 22 -58)")->expected(2);
+      c->add_option("--size", a->figure.size, "3D runs: picture WIDTH HEIGHT in pixels (default 1000 800)")->expected(2);
     }
     if (std::string_view(kind.name) == "phase") {
-      c->add_option("--max-points", a->max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
+      c->add_option("--max-points", a->figure.max_points, "Draw at most this many disks (a random subset), ≥ 100")->capture_default_str();
     }
     if (kind.window_help != nullptr) {
       a->window = kind.window_default;
       c->add_option("--window", a->window, kind.window_help)->capture_default_str();
     }
-    if (kind.writes_data) c->add_option("--data", a->data, "Also write the numbers drawn to this JSON file");
+    if (kind.writes_data) c->add_option("--data", a->figure.data, "Also write the numbers drawn to this JSON file");
     c->callback([a, &kind, c] {
       a->given = given_options(*c);
       finish_plot_command(kind.name, [&] { return plot_with_script(kind, *a); });

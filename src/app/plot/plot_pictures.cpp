@@ -4,16 +4,13 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <memory>
 
 #include "app/plot/plot_command.hpp"
-#include "app/plot/plot_config3d.hpp"
-#include "app/plot/plot_inputs.hpp"
-#include "app/plot/plot_run_picture.hpp"
-#include "io/atomic_file.hpp"
-#include "io/hdf5_util.hpp"
-#include "io/io_error.hpp"
+#include "io/run_files.hpp"
+#include "render/config3d_picture.hpp"
+#include "render/snapshot_movie.hpp"
+#include "render/snapshot_picture.hpp"
 
 namespace granule::app {
 
@@ -40,11 +37,15 @@ struct PictureArguments {
 constexpr const char* kOptions2dOnly[] = {"--field", "--cells", "--no-arrows", "--relative", "--min-radius"};
 constexpr const char* kOptions3dOnly[] = {"--view", "--perspective"};
 
+bool was_given(const PictureArguments& a, const char* option) {
+  return std::find(a.given.begin(), a.given.end(), option) != a.given.end();
+}
+
 template <std::size_t N>
 void refuse_given(const PictureArguments& a, const char* const (&options)[N], const char* which) {
   for (const char* option : options) {
-    if (std::find(a.given.begin(), a.given.end(), option) != a.given.end()) {
-      throw BadPlotInput(fmt::format("{} is for {} runs only", option, which));
+    if (was_given(a, option)) {
+      throw BadInput(fmt::format("{} is for {} runs only", option, which));
     }
   }
 }
@@ -52,13 +53,12 @@ void refuse_given(const PictureArguments& a, const char* const (&options)[N], co
 // The sphere picture of a 3D run (config3d.py): --color direction (the 2D default) becomes auto.
 int plot_config_3d(const PictureArguments& a, const std::string& snapshots) {
   refuse_given(a, kOptions2dOnly, "2D");
-  const bool color_given = std::find(a.given.begin(), a.given.end(), "--color") != a.given.end();
-  if (color_given && (a.color == "direction" || a.color == "field" || a.color == "spin")) {
-    throw BadPlotInput(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
+  if (was_given(a, "--color") && (a.color == "direction" || a.color == "field" || a.color == "spin")) {
+    throw BadInput(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
   }
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
-  const int status = draw_config_3d({snapshots, out, a.frame, a.width, color_given ? a.color : "auto", a.view, a.perspective,
-                                     !a.no_legend});
+  const int status = render::draw_config_3d(
+      {snapshots, out, a.frame, a.width, was_given(a, "--color") ? a.color : "auto", a.view, a.perspective, !a.no_legend});
   if (status == 0) fmt::print("wrote {}\n", out);
   return status;
 }
@@ -85,17 +85,17 @@ void add_picture_options(CLI::App* command, PictureArguments& a) {
 
 render::PictureOptions picture_options(const PictureArguments& a) {
   render::PictureOptions o;
-  if (a.width < 16 || a.width > 20000) throw BadPlotInput(fmt::format("--width {} is outside [16, 20000]", a.width));
+  if (a.width < 16 || a.width > 20000) throw BadInput(fmt::format("--width {} is outside [16, 20000]", a.width));
   const auto coloring = render::parse_disk_coloring(a.color);
-  if (!coloring) throw BadPlotInput(fmt::format("--color {} is not one of direction, speed, field, spin, none", a.color));
-  const auto& names = render::cell_field_names();
+  if (!coloring) throw BadInput(fmt::format("--color {} is not one of direction, speed, field, spin, none", a.color));
+  const auto& names = cell_field_names();
   if (std::find(names.begin(), names.end(), a.field) == names.end()) {
-    throw BadPlotInput(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
+    throw BadInput(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
   }
   if (!a.cells.empty() && (a.cells[0] < 1 || a.cells[1] < 1 || a.cells[0] > 4096 || a.cells[1] > 4096)) {
-    throw BadPlotInput(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
+    throw BadInput(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
   }
-  if (!(a.min_radius >= 0.0 && a.min_radius <= 10.0)) throw BadPlotInput(fmt::format("--min-radius {} is outside [0, 10]", a.min_radius));
+  if (!(a.min_radius >= 0.0 && a.min_radius <= 10.0)) throw BadInput(fmt::format("--min-radius {} is outside [0, 10]", a.min_radius));
   o.width_px = a.width;
   o.coloring = *coloring;
   o.field = a.field;
@@ -110,27 +110,14 @@ render::PictureOptions picture_options(const PictureArguments& a) {
   return o;
 }
 
-// Rough grains are coloured by their spin unless --color says otherwise (thesis Fig C.4); spin
-// colours for smooth grains are bad input.
-void color_rough_grains_by_spin(render::PictureOptions& o, const PictureArguments& a, const SnapshotMetadata& m) {
-  const bool color_given = std::find(a.given.begin(), a.given.end(), "--color") != a.given.end();
-  if (!color_given && m.system.roughness.rough) o.coloring = render::DiskColoring::kSpin;
-  if (o.coloring == render::DiskColoring::kSpin && !m.system.roughness.rough) {
-    throw BadPlotInput("--color spin needs a run of rough grains (its snapshots have no spins)");
-  }
-}
-
 int plot_config(const PictureArguments& a) {
   const std::string snapshots = locate_run_file(a.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
   if (hdf5_dimension(snapshots) == 3) return plot_config_3d(a, snapshots);
   refuse_given(a, kOptions3dOnly, "3D");
-  render::PictureOptions options = picture_options(a);
-  const SnapshotRead first = read_snapshot(snapshots, 0);
-  color_rough_grains_by_spin(options, a, first.metadata);
-  const std::int64_t frame = resolve_frame(a.frame, first.frames);
+  const render::PictureOptions options = picture_options(a);
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
-  render::write_png(render_snapshot_picture(read_snapshot(snapshots, frame), options), out);
+  const std::int64_t frame = render::write_snapshot_picture(snapshots, a.frame, options, was_given(a, "--color"), out);
   fmt::print("wrote {} (frame {})\n", out, frame);
   return 0;
 }
@@ -142,56 +129,18 @@ struct MovieArguments {
   bool no_caption = false;
 };
 
-// "t = …   c = …" of a frame, and the image velocity U when the snapshot file stores it per frame.
-std::string frame_caption(const SnapshotFrame& frame, const std::vector<double>& shear_velocity, std::size_t k) {
-  std::string caption = fmt::format("t = {:.4g}   c = {:.4g}", frame.clock.time, frame.collisions_per_particle);
-  if (k < shear_velocity.size()) caption += fmt::format("   U = {:.4g}", shear_velocity[k]);
-  return caption;
-}
-
 int plot_movie(const MovieArguments& m) {
-  render::PictureOptions options = picture_options(m.picture);
-  if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw BadPlotInput(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
-  if (m.stride < 1) throw BadPlotInput(fmt::format("--stride {} must be at least 1", m.stride));
+  const render::PictureOptions options = picture_options(m.picture);
+  if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw BadInput(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
+  if (m.stride < 1) throw BadInput(fmt::format("--stride {} must be at least 1", m.stride));
   const std::string snapshots = locate_run_file(m.picture.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
-  if (hdf5_dimension(snapshots) == 3) throw BadPlotInput("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
+  if (hdf5_dimension(snapshots) == 3) throw BadInput("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
   refuse_given(m.picture, kOptions3dOnly, "3D");
-  const SnapshotRead first = read_snapshot(snapshots, 0);
-  color_rough_grains_by_spin(options, m.picture, first.metadata);
-  const std::int64_t frames = first.frames;
   const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
-  // Without the encoder the movie cannot be written: say so before drawing anything.
-  if (!program_in_path("ffmpeg")) {
-    throw IoError(fmt::format("cannot write {}: ffmpeg is not in PATH (install Debian's ffmpeg)", out));
-  }
-  // Frames go to a scratch folder beside the output and the movie to `<out>.partial`, both removed
-  // whatever happens; only a complete movie is renamed to `out`.
-  const std::filesystem::path scratch = out + ".frames";
-  const std::string partial = out + ".partial";
-  const RemovedAtExit remove_scratch{scratch}, remove_partial{partial};
-  std::error_code error;
-  std::filesystem::remove_all(scratch, error);
-  if (error || !std::filesystem::create_directories(scratch, error)) {
-    throw io_error(fmt::format("cannot create {}", scratch.string()), error.value());
-  }
-  const std::vector<double> shear_velocity = h5::read_frame_series(snapshots, "shear_velocity");
-  std::int64_t drawn = 0;
-  for (std::int64_t k = 0; k < frames; k += m.stride, ++drawn) {
-    const SnapshotRead snapshot = read_snapshot(snapshots, k);
-    if (!m.no_caption) options.caption = frame_caption(snapshot.frame, shear_velocity, static_cast<std::size_t>(k));
-    render::write_png(render_snapshot_picture(snapshot, options), (scratch / fmt::format("frame_{:06d}.png", drawn)).string());
-  }
-  // H.264 needs even dimensions: pad by one white pixel where needed.
-  const int status = run_program({"ffmpeg", "-loglevel", "error", "-y", "-framerate", fmt::format("{}", m.fps), "-i",
-                                  (scratch / "frame_%06d.png").string(), "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
-                                  "-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mp4", partial});
-  if (status != 0) {
-    throw IoError(status == 127 ? fmt::format("cannot write {}: ffmpeg could not be started", out)
-                                : fmt::format("cannot write {}: ffmpeg failed with exit code {}", out, status));
-  }
-  publish_file(partial, out);
-  fmt::print("wrote {} ({} of {} snapshots at {} per second)\n", out, drawn, frames, m.fps);
+  const render::MovieWritten movie =
+      render::write_snapshot_movie(snapshots, options, was_given(m.picture, "--color"), {m.fps, m.stride, !m.no_caption}, out);
+  fmt::print("wrote {} ({} of {} snapshots at {} per second)\n", out, movie.drawn, movie.frames, m.fps);
   return 0;
 }
 

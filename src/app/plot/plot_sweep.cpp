@@ -3,11 +3,12 @@
 // when the sweep varies the restitution of sheared runs).
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <memory>
 
+#include "app/command_line.hpp"
 #include "app/plot/plot_command.hpp"
-#include "app/plot/plot_inputs.hpp"
+#include "io/run_files.hpp"
+#include "render/plot_scripts.hpp"
 
 namespace granule::app {
 
@@ -19,7 +20,7 @@ struct SweepPlotArguments {
 };
 
 int plot_sweep(const SweepPlotArguments& a) {
-  if (a.dpi < 20 || a.dpi > 600) throw BadPlotInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
+  if (a.dpi < 20 || a.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
   const std::string input = locate_run_file(a.input, "results.csv");
   const std::string out = a.out.empty() ? output_beside(a.input, "sweep.png") : a.out;
   std::vector<std::string> arguments{input,
@@ -32,9 +33,9 @@ int plot_sweep(const SweepPlotArguments& a) {
                                      "--y",
                                      a.y,
                                      "--granule",
-                                     std::filesystem::read_symlink("/proc/self/exe").string()};
+                                     own_executable()};
   if (!a.data.empty()) arguments.insert(arguments.end(), {"--data", a.data});
-  const int status = run_plot_script("sweep", arguments);
+  const int status = render::run_plot_script("sweep", arguments);
   if (status == 0) fmt::print("wrote {}\n", out);
   return status;
 }

@@ -7,27 +7,22 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "app/exit_codes.hpp"
-#include "app/interrupt_signals.hpp"
-#include "app/plot/plot_run_picture.hpp"
 #include "app/run/run_console.hpp"
-#include "driver/run_directory.hpp"
-#include "driver/run_session.hpp"
-#include "driver/run_start.hpp"
-#include "io/atomic_file.hpp"
-#include "io/checkpoint_file.hpp"
+#include "driver/interrupt_signals.hpp"
+#include "driver/run_beginnings.hpp"
 #include "io/io_error.hpp"
-#include "io/snapshot_file.hpp"
+#include "render/snapshot_picture.hpp"
 
 namespace granule::app {
 
 namespace {
 
+using driver::InterruptSignals;
 using driver::RunSession;
 using driver::stop_text;
 
@@ -40,145 +35,42 @@ struct RunOptions {
   bool force = false;
 };
 
-// The first `--set` key outside run.*, output.* and `also_allowed`, or "" (a resumed run keeps
-// its physics).
-std::string first_physics_override(const std::vector<std::string>& overrides, const std::vector<std::string>& also_allowed) {
-  for (const std::string& assignment : overrides) {
-    const std::string key = assignment.substr(0, assignment.find('='));
-    const bool allowed = key.rfind("run.", 0) == 0 || key.rfind("output.", 0) == 0 ||
-                         std::find(also_allowed.begin(), also_allowed.end(), key) != also_allowed.end();
-    if (!allowed) return key;
-  }
-  return {};
-}
-
-// Refuses (exit 5) a run whose estimated peak memory exceeds what the machine has available.
-void check_memory_for_run(const RunConfig& config, const CellGrid& grid) {
-  const double needed = driver::estimated_run_bytes(config, grid);
-  const double available = driver::available_memory_bytes();
-  if (available > 0.0 && needed > available) {
-    throw CommandFailure{kExitOutOfMemory,
-                         fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
-                                     config.system.particles, needed / (1 << 30), available / (1 << 30))};
-  }
-}
-
-// With --from-frame the run takes another branch from an earlier state, so the TC model may be
-// switched on (the way out of an inelastic collapse); nothing else of the physics may change.
-const std::vector<std::string> kFromFrameKeys = {"system.tc_duration"};
-
-RunConfig configuration(const RunOptions& options, bool resume, const std::string& out) {
-  if (resume) {
-    // Only how long to run and what to write may change: anything else would be another run.
-    const auto also_allowed = options.from_frame ? kFromFrameKeys : std::vector<std::string>{};
-    if (const std::string key = first_physics_override(options.overrides, also_allowed); !key.empty()) {
-      throw CommandFailure{kExitBadInput, fmt::format("--set {}: a resumed run may only change run.* and output.* keys{} "
-                                                      "(the physics of {} is fixed by its config.toml)", key,
-                                                      options.from_frame ? " and system.tc_duration" : "", out)};
-    }
-  }
-  const ConfigResult parsed = resume ? load_config_file(out + "/config.toml", options.overrides)
-                              : options.config_path.empty() ? parse_config(default_example_toml(), options.overrides)
-                                                            : load_config_file(options.config_path, options.overrides);
-  if (!parsed.config) throw CommandFailure{kExitBadInput, parsed.error};
-  return *parsed.config;
-}
-
-// A refusal of the shared start (driver/run_start.hpp) as the command's exit code 2.
+// The driver's refusals as the command's exit codes: 2 for input, 5 for memory.
 template <typename F>
-auto or_bad_input(F&& f) {
+auto or_failure(F&& f) {
   try {
     return f();
   } catch (const driver::ConfigError& error) {
     throw CommandFailure{kExitBadInput, error.what()};
-  }
-}
-
-template <int D>
-std::unique_ptr<RunSession<D>> new_session(const RunConfig& config, const CellGrid& grid, const RunOptions& options) {
-  const std::string& out = options.out_dir;
-  check_memory_for_run(config, grid);
-  const driver::RunStart start = or_bad_input([&] { return driver::run_start(config); });
-  try {
-    driver::prepare_new_output_directory(out, options.force);
   } catch (const driver::RunDirectoryRefused& refused) {
     throw CommandFailure{kExitBadInput, refused.what()};
+  } catch (const driver::NotEnoughMemory& error) {
+    throw CommandFailure{kExitOutOfMemory, error.what()};
   }
-  write_file_atomically(out + "/config.toml", to_toml(config));
-  return std::make_unique<RunSession<D>>(config, grid, out, start);
 }
 
+// A new run, the run resumed from its checkpoint, or continued from a frame, with what it says.
 template <int D>
-std::unique_ptr<RunSession<D>> resumed_session(const RunConfig& config, const CellGrid& grid, const std::string& out) {
-  StateArchive checkpoint;
-  try {
-    checkpoint = read_checkpoint(out + "/checkpoint.h5");
-  } catch (const std::exception& error) {
-    throw CommandFailure{kExitBadInput, fmt::format("cannot resume {}: {}", out, error.what())};
+std::unique_ptr<RunSession<D>> begin(const RunOptions& options, const RunConfig& config, const CellGrid& grid,
+                                     const std::string& out) {
+  if (options.resume_dir.empty()) return driver::begin_new_run<D>(config, grid, out, options.force);
+  if (!options.from_frame) {
+    std::unique_ptr<RunSession<D>> session = driver::resume_run<D>(config, grid, out);
+    const Simulation<D>& sim = session->simulation();
+    fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, sim.time(), sim.collisions_per_particle());
+    return session;
   }
-  check_memory_for_run(config, grid);
-  auto session = [&] {
-    try {
-      return std::make_unique<RunSession<D>>(config, grid, out, checkpoint);
-    } catch (const std::runtime_error& error) {
-      throw CommandFailure{kExitBadInput, fmt::format("cannot resume {}: {}", out, error.what())};
-    }
-  }();
-  driver::remove_end_of_run_outputs(out);
-  write_file_atomically(out + "/config.toml", to_toml(config));
-  const Simulation<D>& sim = session->simulation();
-  fmt::print("resuming {} at t = {:.6g}, c = {:.6g}\n", out, sim.time(), sim.collisions_per_particle());
-  return session;
-}
-
-template <int D>
-std::unique_ptr<RunSession<D>> from_frame_session(const RunConfig& config, const CellGrid& grid, const std::string& out,
-                                               std::int64_t frame) {
-  const std::string snapshots = driver::existing_run_output(out, "snapshots.h5");
-  SnapshotRead read;
-  try {
-    if (snapshots.empty()) throw std::runtime_error("the run has no snapshot file");
-    read = read_snapshot(snapshots, frame);
-  } catch (const std::exception& error) {
-    throw CommandFailure{kExitBadInput, fmt::format("--from-frame {}: cannot read {}: {}", frame, out, error.what())};
-  }
-  if (read.metadata.system.particles != config.system.particles || read.metadata.system.diameter != config.system.diameter ||
-      read.metadata.system.dimension != config.system.dimension) {
-    throw CommandFailure{kExitBadInput, fmt::format("{} does not match {}/config.toml", snapshots, out)};
-  }
-  const std::int64_t k = frame < 0 ? read.frames + frame : frame;
-  check_memory_for_run(config, grid);
-  // Everything the run wrote moves aside; frames and rows up to frame K come back.
-  const double c = read.frame.collisions_per_particle;
-  driver::BranchedOutputs branched = driver::branch_run_outputs(out, k, c, config.fields.enabled);
-  const std::string& aside = branched.aside;
-  typename RunSession<D>::FrameStart start;
-  start.frame = read.frame;
-  start.snapshot_frames = k + 1;
-  start.samples = std::move(branched.samples);
-  start.kept = branched.kept;
-  write_file_atomically(out + "/config.toml", to_toml(config));
-  auto session = std::make_unique<RunSession<D>>(config, grid, out, start);
-  fmt::print("continuing {} from frame {} (t = {:.6g}, c = {:.6g}); the later outputs are in {}\n", out, k,
-             read.frame.clock.time, c, aside);
-  return session;
-}
-
-// The mean free time per disk over the last sampled interval (each collision involves two disks).
-template <int D>
-double mean_free_time(const RunSession<D>& session) {
-  const Simulation<D>& sim = session.simulation();
-  for (auto it = session.samples().rbegin(); it != session.samples().rend(); ++it) {
-    if (it->collision_rate > 0.0) return 0.5 / it->collision_rate;
-  }
-  return sim.collisions() > 0 ? 0.5 * sim.time() / sim.collisions_per_particle() : 0.0;
+  driver::BranchedRun<D> branch = driver::branch_run_from_frame<D>(config, grid, out, *options.from_frame);
+  fmt::print("continuing {} from frame {} (t = {:.6g}, c = {:.6g}); the later outputs are in {}\n", out, branch.frame,
+             branch.time, branch.collisions_per_particle, branch.aside);
+  return std::move(branch.session);
 }
 
 template <int D>
 std::string collapse_report(const RunSession<D>& session, const std::string& out) {
   const Simulation<D>& sim = session.simulation();
   const CollapseReport& c = sim.collapse();
-  const double free_time = mean_free_time(session);
+  const double free_time = session.mean_free_time();
   const std::int64_t frames = session.snapshot_frames();
   return fmt::format(
              "granule run: stopped by inelastic collapse at t = {:.9g} (c = {:.6g}): particles {} and {} near ({:.4g}, {:.4g}, {:.4g})"
@@ -200,9 +92,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
   // clock, which may stamp a file a tick before now()).
   const auto since = std::filesystem::file_time_type::clock::now() - std::chrono::milliseconds(50);
   try {
-    std::unique_ptr<RunSession<D>> session = !resume              ? new_session<D>(config, grid, options)
-                                             : options.from_frame ? from_frame_session<D>(config, grid, out, *options.from_frame)
-                                                                  : resumed_session<D>(config, grid, out);
+    std::unique_ptr<RunSession<D>> session = or_failure([&] { return begin<D>(options, config, grid, out); });
     print_header(config, !resume && options.config_path.empty(), options.overrides.size());
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
@@ -218,7 +108,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
     const std::string collapse = reason == StopReason::kInelasticCollapse ? collapse_report(*session, out) : std::string{};
     session.reset();  // the picture reads the last frame back: of 10^8 disks, not beside the engine
     try {
-      if (frames > 0) fmt::print("picture: {}\n", render_run_picture(out));
+      if (frames > 0) fmt::print("picture: {}\n", render::render_run_picture(out));
     } catch (const IoError&) {
       throw;  // the disk failed: exit 4, the data files written before stay complete
     } catch (const std::exception& error) {  // a missing picture must not lose the run's data
@@ -248,8 +138,10 @@ int run(const RunOptions& options) {
   // From the start: a signal during set-up stops the run at its first event, checkpointed.
   const InterruptSignals signals;
   try {
-    const RunConfig config = configuration(options, resume, out);
-    const CellGrid grid = or_bad_input([&] { return driver::run_cell_grid(config); });
+    const RunConfig config = or_failure([&] {
+      return driver::run_configuration(options.config_path, resume ? out : "", options.from_frame.has_value(), options.overrides);
+    });
+    const CellGrid grid = or_failure([&] { return driver::run_cell_grid(config); });
     return config.system.dimension == 3 ? run_in<3>(options, config, grid) : run_in<2>(options, config, grid);
   } catch (const CommandFailure& failure) {
     fmt::print(stderr, "granule run: error: {}\n", failure.message);

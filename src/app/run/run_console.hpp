@@ -1,7 +1,6 @@
-// What `granule run` says on the console about the run it starts and the files it wrote: the system,
-// the collision model in force (ẽ alone, or with the TC model and its t_c: the built-in example uses
-// it, and a reader must not have to open config.toml to learn that), rough grains, walls, gravity, the
-// pre-run, and at the end every file the invocation wrote.
+// What `granule run` says on the console about the run it starts and the files it wrote: the
+// configuration in words (io/config_description.hpp), where it came from, the pre-run, and at the
+// end every file the invocation wrote.
 #pragma once
 
 #include <filesystem>
@@ -13,9 +12,6 @@ namespace granule::app {
 
 // The opening lines of a run; `built_in_example` when no CONFIG was given, with `overrides` --set.
 void print_header(const RunConfig& config, bool built_in_example, std::size_t overrides);
-
-// One line: the restitution law of every collision (thesis (1.2)), with the TC model when t_c > 0.
-std::string collision_model_text(const SystemParams& system);
 
 // "files written in OUT: a, b, …": every regular file under `out` (paths relative to it, sorted)
 // modified since `since`.

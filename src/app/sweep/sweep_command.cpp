@@ -6,15 +6,14 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
-#include <numeric>
 #include <optional>
 
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
-#include "app/interrupt_signals.hpp"
+#include "driver/interrupt_signals.hpp"
+#include "sweep/array_tasks.hpp"
 #include "sweep/point_runs.hpp"
 #include "sweep/results_table.hpp"
 #include "sweep/sweep_directory.hpp"
@@ -26,6 +25,7 @@ namespace granule::app {
 
 namespace {
 
+using driver::InterruptSignals;
 using namespace granule::sweep;
 
 struct SweepOptions {
@@ -37,46 +37,6 @@ struct SweepOptions {
   std::optional<int> array_task;
   std::optional<int> array_count;
 };
-
-// The share of one array task: every M-th point from the I-th, so that each task gets points from
-// all over the sweep (neighbouring points often cost alike).
-struct ArrayShare {
-  int task = 0;
-  int count = 1;
-};
-
-int environment_integer(const char* name) {
-  const char* text = std::getenv(name);
-  char* end = nullptr;
-  const long value = text != nullptr ? std::strtol(text, &end, 10) : 0;
-  if (text == nullptr || *text == '\0' || *end != '\0' || value < 0 || value > 1000000) {
-    throw CommandFailure{kExitBadInput,
-                         fmt::format("{} = \"{}\" is not a task number", name, text != nullptr ? text : "")};
-  }
-  return static_cast<int>(value);
-}
-
-// --array-task/--array-count, else SLURM's array variables (task IDs counted from
-// SLURM_ARRAY_TASK_MIN, so that `--array=1-8` works as well as `--array=0-7`).
-std::optional<ArrayShare> array_share(const SweepOptions& o) {
-  ArrayShare share;
-  if (o.array_task || o.array_count) {
-    if (!o.array_task || !o.array_count)
-      throw CommandFailure{kExitBadInput, "--array-task and --array-count go together"};
-    share = {*o.array_task, *o.array_count};
-  } else if (std::getenv("SLURM_ARRAY_TASK_ID") != nullptr && !o.mpi) {
-    const int first = std::getenv("SLURM_ARRAY_TASK_MIN") != nullptr ? environment_integer("SLURM_ARRAY_TASK_MIN") : 0;
-    share = {environment_integer("SLURM_ARRAY_TASK_ID") - first, environment_integer("SLURM_ARRAY_TASK_COUNT")};
-  } else {
-    return std::nullopt;
-  }
-  if (share.count < 1 || share.task < 0 || share.task >= share.count) {
-    throw CommandFailure{kExitBadInput,
-                         fmt::format("array task {} of {}: the task must be in [0, count)", share.task, share.count)};
-  }
-  return share;
-}
-
 
 int exit_code(const SweepTally& tally) {
   if (const int signal = InterruptSignals::received(); signal != 0) return kExitInterruptedBase + signal;
@@ -102,14 +62,10 @@ SweepSpec checked_spec(const SweepOptions& o) {
 }
 
 int run_locally(const SweepOptions& o, const SweepSpec& spec) {
-  const std::optional<ArrayShare> share = array_share(o);
+  const std::optional<ArrayShare> share = array_share(o.array_task, o.array_count, o.mpi);
   const SweepRun run{own_executable(), SweepDirectory{o.out}, &spec, InterruptSignals::flag()};
   prepare_sweep_directory(run.dir, spec);
-  std::vector<std::size_t> indices;
-  for (std::size_t k = 0; k < spec.points.size(); ++k) {
-    if (!share || static_cast<int>(k % static_cast<std::size_t>(share->count)) == share->task) indices.push_back(k);
-  }
-  const std::vector<PointRecord> records = run_points(run, indices, o.jobs, true);
+  const std::vector<PointRecord> records = run_points(run, share.value_or(ArrayShare{}).points(spec.points.size()), o.jobs, true);
   if (share && share->count > 1) {
     // Other tasks are still running: results.csv is gathered once they all ended.
     SweepTally mine;

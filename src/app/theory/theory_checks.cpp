@@ -2,9 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <cstdio>
-
 #include "app/exit_codes.hpp"
 
 namespace granule::app::theory_checks {
@@ -24,13 +21,12 @@ void require_if_given(const CLI::App& command, const std::string& option, double
   if (command.count(option) > 0) require(command, option, value, range, why);
 }
 
-void require_finite(const CLI::App& command, const std::vector<std::string>& names, const std::vector<double>& values) {
-  for (std::size_t j = 0; j < values.size(); ++j) {
-    if (!std::isfinite(values[j])) {
-      refuse(command, fmt::format("these options give {} = {}, beyond double precision: bring them nearer to "
-                                  "ordinary values", names[j], values[j]));
-    }
+void print_table(const CLI::App& command, const theory::PredictionTable& table, bool csv) {
+  if (const auto entry = theory::first_non_finite(table)) {
+    refuse(command, fmt::format("these options give {} = {}, beyond double precision: bring them nearer to ordinary values",
+                                entry->name, entry->value));
   }
+  fmt::print("{}", csv ? theory::table_csv(table) : theory::table_text(table));
 }
 
 }  // namespace granule::app::theory_checks

@@ -1,15 +1,16 @@
-// Option checks shared by the `granule theory` subcommands.  Every numeric option is checked
-// before anything is printed: a value outside the range its formulas hold in (NaN, ±∞, e = 2, a
-// negative length) is bad input, exit 2, with a message naming the option and the range.
-// Lengths, speeds and rates share the ranges of `granule run` (io/input_ranges.hpp).
+// Option checks shared by the `granule theory` subcommands, and how they print a prediction
+// (theory/prediction_table.hpp).  Every numeric option is checked before anything is printed: a
+// value outside the range its formulas hold in (NaN, ±∞, e = 2, a negative length) is bad input,
+// exit 2, with a message naming the option and the range.  Lengths, speeds and rates share the
+// ranges of `granule run` (io/input_ranges.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
-#include <vector>
 
 #include "init/initial_state.hpp"
 #include "io/input_ranges.hpp"
+#include "theory/prediction_table.hpp"
 
 namespace granule::app::theory_checks {
 
@@ -31,8 +32,8 @@ void require(const CLI::App& command, const std::string& option, double value, c
 void require_if_given(const CLI::App& command, const std::string& option, double value, const NumberRange& range,
                       const std::string& why = {});
 
-// The last guard: options inside their ranges may still combine into a result beyond double
-// precision (say ν = 1e-300 with σ = 1e30); no infinite or NaN result is printed.
-void require_finite(const CLI::App& command, const std::vector<std::string>& names, const std::vector<double>& values);
+// Aligned columns with `# ` summary lines above them, or CSV.  Refuses (exit 2) a table whose
+// derived values or rows hold an infinite or NaN value, before printing anything.
+void print_table(const CLI::App& command, const theory::PredictionTable& table, bool csv);
 
 }  // namespace granule::app::theory_checks

@@ -6,7 +6,6 @@
 
 #include "app/theory/theory_checks.hpp"
 #include "app/theory/theory_subcommands.hpp"
-#include "app/theory/theory_table.hpp"
 #include "theory/cooling_tables.hpp"
 #include "theory/kinetic_scales.hpp"
 

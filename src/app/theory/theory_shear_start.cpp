@@ -9,7 +9,6 @@
 
 #include "app/theory/theory_checks.hpp"
 #include "app/theory/theory_subcommands.hpp"
-#include "app/theory/theory_table.hpp"
 #include "io/config.hpp"
 #include "theory/shear_start_table.hpp"
 

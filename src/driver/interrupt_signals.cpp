@@ -1,6 +1,6 @@
-#include "app/interrupt_signals.hpp"
+#include "driver/interrupt_signals.hpp"
 
-namespace granule::app {
+namespace granule::driver {
 
 namespace {
 
@@ -34,4 +34,4 @@ InterruptSignals::~InterruptSignals() {
 
 const volatile std::sig_atomic_t* InterruptSignals::flag() { return &received_signal; }
 
-}  // namespace granule::app
+}  // namespace granule::driver

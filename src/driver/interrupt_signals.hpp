@@ -5,7 +5,7 @@
 
 #include <csignal>
 
-namespace granule::app {
+namespace granule::driver {
 
 class InterruptSignals {
  public:
@@ -19,4 +19,4 @@ class InterruptSignals {
   static int received() { return *flag(); }
 };
 
-}  // namespace granule::app
+}  // namespace granule::driver

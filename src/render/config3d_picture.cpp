@@ -1,10 +1,10 @@
-#include "app/plot/plot_config3d.hpp"
+#include "render/config3d_picture.hpp"
 
 #include <fmt/format.h>
 
-#include "app/plot/plot_inputs.hpp"
+#include "render/plot_scripts.hpp"
 
-namespace granule::app {
+namespace granule::render {
 
 int draw_config_3d(const Config3dRequest& r) {
   std::vector<std::string> arguments{r.snapshots, "--out", r.out, "--frame", std::to_string(r.frame),
@@ -15,4 +15,4 @@ int draw_config_3d(const Config3dRequest& r) {
   return run_plot_script("config3d", arguments);
 }
 
-}  // namespace granule::app
+}  // namespace granule::render

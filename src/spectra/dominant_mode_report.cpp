@@ -1,20 +1,20 @@
-#include "app/analyze/spectra_console.hpp"
+#include "spectra/dominant_mode_report.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-namespace granule::app {
+namespace granule::spectra {
 
 std::string describe_comparison(const SystemParams& system, double cluster_length, double false_alarm) {
   const std::string free_path = system.dimension == 3 ? "l = 1/(√2 π n σ²) (Boltzmann)" : "l = L_x L_y/(2Nσ) (§3.1.2)";
   return fmt::format("dominant lengths 2π/|k| are compared with L0 = l/√(1−ẽ²) (eq 1.1) = {:.4g}, {} = {:.4g}; "
                      "a mode is significant when uncorrelated positions would put as much power into one of the "
                      "modes compared with probability < {:g}",
-                     cluster_length, free_path, spectra::mean_free_path(system), false_alarm);
+                     cluster_length, free_path, mean_free_path(system), false_alarm);
 }
 
-std::string describe_dominant(const char* name, const spectra::DominantMode& mode, double cluster_length,
+std::string describe_dominant(const char* name, const DominantMode& mode, double cluster_length,
                               double false_alarm) {
   const std::string where = fmt::format("{}: largest mode 2π/|k| = {:.4g} ({:.3g} L0) at {:.1f}°{}", name, mode.length,
                                         mode.length / cluster_length, mode.angle_deg,
@@ -26,7 +26,7 @@ std::string describe_dominant(const char* name, const spectra::DominantMode& mod
                                         mode.noise_threshold, false_alarm);
 }
 
-void SignificanceTally::add(const spectra::DominantMode& mode, double cluster_length) {
+void SignificanceTally::add(const DominantMode& mode, double cluster_length) {
   ++frames_;
   if (!mode.significant) return;
   ++significant_;
@@ -41,4 +41,4 @@ std::string SignificanceTally::summary(const char* name, double false_alarm) con
                      name, significant_, frames_, false_alarm, sum_length_over_l0_ / significant_);
 }
 
-}  // namespace granule::app
+}  // namespace granule::spectra

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace granule::app {
+namespace granule::render {
 
 struct Config3dRequest {
   std::string snapshots;  // a snapshots.h5 with the root attribute dimension = 3
@@ -23,4 +23,4 @@ struct Config3dRequest {
 // Runs the script and returns its exit code (2: bad input, nothing written).
 int draw_config_3d(const Config3dRequest& request);
 
-}  // namespace granule::app
+}  // namespace granule::render

@@ -1,0 +1,58 @@
+#include "io/config_description.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+namespace granule {
+
+std::string describe_system(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  const char* boundary = config.lees_edwards ? "Lees–Edwards" : s.has_walls() ? "walled" : "periodic";
+  const double u = config.lees_edwards ? s.shear_velocity : wall_shear_velocity(s);
+  return fmt::format("{}{}, N = {}, ν = {:.4g}, σ = {:.6g}{}, e = {}, {} box {} × {}{}{}", s.roughness.rough ? "rough " : "",
+                     s.dimension == 3 ? "spheres" : "disks", s.particles, config.packing_fraction, s.diameter,
+                     config.diameters.monodisperse() ? "" : " (largest)", s.restitution, boundary, s.length_x, s.length_y,
+                     s.dimension == 3 ? fmt::format(" × {}", s.length_z) : std::string{},
+                     config.lees_edwards || s.walls[1] ? fmt::format(", U = {}", u) : std::string{});
+}
+
+std::string collision_model_text(const SystemParams& s) {
+  if (s.tc_duration > 0.0) {
+    return fmt::format("e = {} with the TC model (Luding & McNamara 1998): a collision within t_c = {:g} of either "
+                       "grain's previous collision is elastic",
+                       s.restitution, s.tc_duration);
+  }
+  return fmt::format("e = {} in every collision (TC model off: an inelastic collapse stops the run with exit 3)",
+                     s.restitution);
+}
+
+std::vector<std::string> describe_surfaces(const RunConfig& config) {
+  const SystemParams& s = config.system;
+  const RoughnessParams& r = s.roughness;
+  std::vector<std::string> lines;
+  if (r.rough) {
+    lines.push_back(fmt::format("rough grains: β = {}, q = {} (I = q m σ²/4), μ = {}{}", r.tangential_restitution,
+                                r.inertia_factor, std::isfinite(r.friction) ? fmt::format("{}", r.friction) : "∞ (no Coulomb limit)",
+                                config.initial_from ? std::string{}
+                                                    : fmt::format("; initial T_rot = {}", config.initial_rotational_temperature)));
+  }
+  const auto vector_text = [d = s.dimension](const std::array<double, 3>& v) {
+    return d == 3 ? fmt::format("({}, {}, {})", v[0], v[1], v[2]) : fmt::format("({}, {})", v[0], v[1]);
+  };
+  const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (!s.walls[axis]) continue;
+    const WallParams& lower = s.wall[2 * axis];
+    const WallParams& upper = s.wall[2 * axis + 1];
+    const char name = "xyz"[axis];
+    lines.push_back(fmt::format("walls at {} = 0 (e_w = {}, β_w = {}, velocity {}) and {} = {} (e_w = {}, β_w = {}, velocity {})",
+                                name, lower.restitution, lower.tangential_restitution, vector_text(lower.velocity), name,
+                                lengths[axis], upper.restitution, upper.tangential_restitution, vector_text(upper.velocity)));
+  }
+  if (s.has_gravity()) lines.push_back(fmt::format("gravity g = {}", vector_text(s.gravity)));
+  return lines;
+}
+
+}  // namespace granule

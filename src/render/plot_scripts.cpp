@@ -1,0 +1,64 @@
+#include "render/plot_scripts.hpp"
+
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+extern char** environ;
+
+namespace granule::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Where python/granule_plots is: $GRANULE_PYTHON_DIR; else beside an installed binary
+// (<prefix>/bin/granule → <prefix>/share/granule/python); else, for a developer's build, the
+// source tree it was built from.
+fs::path plot_scripts_root() {
+  if (const char* chosen = std::getenv("GRANULE_PYTHON_DIR"); chosen != nullptr && *chosen != '\0') return chosen;
+  std::error_code ignored;
+  const fs::path installed = fs::read_symlink("/proc/self/exe", ignored).parent_path().parent_path() / GRANULE_INSTALLED_PYTHON_DIR;
+  if (fs::is_directory(installed / "granule_plots", ignored)) return installed;
+  return GRANULE_SOURCE_PYTHON_DIR;
+}
+
+}  // namespace
+
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> pointers;
+  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
+  pointers.push_back(nullptr);
+  pid_t child = 0;
+  if (posix_spawnp(&child, pointers[0], nullptr, nullptr, pointers.data(), environ) != 0) return 127;
+  int status = 0;
+  if (waitpid(child, &status, 0) < 0) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+bool program_in_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path != nullptr ? path : "");
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    const fs::path candidate = fs::path(folder.empty() ? "." : folder) / name;
+    std::error_code ignored;
+    if (fs::is_regular_file(candidate, ignored) && access(candidate.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+int run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
+  const fs::path path = plot_scripts_root() / "granule_plots" / (script + ".py");
+  if (!fs::exists(path)) throw std::runtime_error(fmt::format("the plot script {} is missing", path.string()));
+  std::vector<std::string> argv{GRANULE_SYSTEM_PYTHON, path.string()};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  return run_program(argv);
+}
+
+}  // namespace granule::render
