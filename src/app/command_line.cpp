@@ -36,6 +36,9 @@ int run_command_line(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::ParseError& error) {  // help and version (0), or a malformed command line
     const int code = app.exit(error);
     return code == 0 ? kExitSuccess : kExitBadInput;
+  } catch (const granule::InputError& error) {  // an input file refused by the layers below
+    std::fprintf(stderr, "granule: error: %s\n", error.what());
+    return kExitBadInput;
   } catch (const granule::IoError& error) {
     std::fprintf(stderr, "granule: I/O error: %s\n", error.what());
     return kExitIoError;

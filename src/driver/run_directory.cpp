@@ -56,6 +56,12 @@ double available_memory_bytes() {
 
 void prepare_new_output_directory(const std::string& out, bool force) {
   std::error_code error;
+  // What no directory could be: refused as input (exit 2), before anything is created.
+  if (out.empty()) throw RunDirectoryRefused("--out is empty: give the directory the run writes into");
+  if (fs::is_symlink(fs::symlink_status(out, error)) && !fs::exists(out, error)) {
+    throw RunDirectoryRefused(fmt::format("--out {} is a symbolic link to {}, which does not exist", out,
+                                          fs::read_symlink(out, error).string()));
+  }
   const fs::file_status status = fs::status(out, error);
   if (fs::exists(status) && !fs::is_directory(status)) {
     throw RunDirectoryRefused(fmt::format("--out {} exists and is not a directory", out));

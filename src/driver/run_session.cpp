@@ -185,6 +185,7 @@ nlohmann::json RunSession<D>::finish(StopReason reason) {
                        segment_prerun_collisions_, run_.equilibrate_collisions(), snapshot_frames()};
   nlohmann::json summary = summary_json(config_, sim_, grid_, reason, facts, samples());
   if (RunMeasurements<D>* measurements = run_.measurements()) summary["measurements"] = measurements->finish(sim_);
+  for (const std::string& warning : run_warnings(config_)) summary["warnings"].push_back(warning);
   for (const auto& [name, schedule] : {std::pair{"output.every_time", &run_.sampling()}, {"output.snapshot_every_time", &snapshotting_}}) {
     if (schedule->rounded_up) {
       summary["warnings"].push_back(fmt::format("{} is below one ulp of the clock: rounded up", name));

@@ -84,4 +84,21 @@ RunStart run_start(const RunConfig& config) {
   return start;
 }
 
+std::vector<std::string> run_warnings(const RunConfig& config) {
+  std::vector<std::string> warnings;
+  if (config.lees_edwards) {
+    const ShearHistory& history = config.system.shear_history;
+    const std::int64_t segments = ShearProtocol(config.system.shear_velocity, history).segments_while_changing(kManySegments + 1);
+    if (segments > kManySegments) {
+      ShearHistory usual = history;
+      usual.tolerance = 1e-3;
+      warnings.push_back(fmt::format(
+          "boundary.shear_tolerance = {:g} makes the shear protocol take more than {} segments while U(t) changes "
+          "(each ends with an engine action that re-predicts the grains at the Lees–Edwards faces); the default 1e-3 "
+          "takes {}", history.tolerance, kManySegments, ShearProtocol(config.system.shear_velocity, usual).segments_while_changing(kManySegments + 1)));
+    }
+  }
+  return warnings;
+}
+
 }  // namespace granule::driver

@@ -5,7 +5,10 @@
 // at the velocity of the initial profile: U(0) of the protocol, or 0 for the static gas.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cells/cell_grid.hpp"
 #include "engine/system_params.hpp"
@@ -30,5 +33,11 @@ struct RunStart {
 
 // The initial state of a new run of `config`.
 RunStart run_start(const RunConfig& config);
+
+// What a valid configuration will cost beyond the usual, in words a user can act on (printed when
+// the run starts and kept in summary.json): a Lees–Edwards protocol whose tolerance makes it take
+// more than kManySegments constant-velocity segments while U(t) changes.
+inline constexpr std::int64_t kManySegments = 1000000;
+std::vector<std::string> run_warnings(const RunConfig& config);
 
 }  // namespace granule::driver

@@ -296,7 +296,6 @@ void Simulation<D>::check_restored_clocks() const {
   for (const auto& [name, value] : clocks) {
     if (!std::isfinite(value)) refuse(std::string(name) + " is not finite");
   }
-  if (t_now_ < 0.0 || clock_base_ < 0.0) refuse("t_now or clock_base is negative: time runs from 0");
   if (std::isnan(segment_end_)) refuse("shear_segment_end is not a number");
   if (collisions_ < 0 || events_ < collisions_ || events_since_rebase_ < 0) {
     refuse("collisions, events or events_since_rebase is not a count of this run's events");

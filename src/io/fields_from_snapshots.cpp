@@ -16,7 +16,7 @@ FieldGrid fields_from_snapshots_grid(const SystemParams& s, const std::vector<in
   if (cells.empty()) return grid;
   if (cells.size() != (three_dimensional ? 3u : 2u) ||
       std::any_of(cells.begin(), cells.end(), [](int n) { return n < 1 || n > (1 << 14); })) {
-    throw BadInput(fmt::format("--cells expects {} with integers in [1, 16384]", three_dimensional ? "nx,ny,nz" : "nx,ny"));
+    throw InputError(fmt::format("--cells expects {} with integers in [1, 16384]", three_dimensional ? "nx,ny,nz" : "nx,ny"));
   }
   grid.nx = cells[0];
   grid.ny = cells[1];

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analysis/field_grid.hpp"
-#include "io/bad_input.hpp"
+#include "io/io_error.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule {
@@ -25,7 +25,7 @@ struct FieldsFromSnapshots {
 };
 
 // The grid of the fields: about 20 particles per cell (analysis/field_grid.hpp), or `cells` NX NY
-// (NZ in 3D), each in [1, 16384]; other cells throw BadInput.
+// (NZ in 3D), each in [1, 16384]; other cells throw InputError.
 FieldGrid fields_from_snapshots_grid(const SystemParams& system, const std::vector<int>& cells);
 
 void write_fields_from_snapshots(const FieldsFromSnapshots& request);

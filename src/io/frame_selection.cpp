@@ -8,7 +8,7 @@ namespace granule {
 
 std::int64_t resolve_frame(std::int64_t frame, std::int64_t frames) {
   if (frame < -frames || frame >= frames) {
-    throw BadInput(fmt::format("--frame {} is out of range: the file has {} frames (allowed {} … {})", frame, frames,
+    throw InputError(fmt::format("--frame {} is out of range: the file has {} frames (allowed {} … {})", frame, frames,
                                -frames, frames - 1));
   }
   return frame < 0 ? frames + frame : frame;
@@ -57,11 +57,11 @@ std::vector<std::int64_t> parse_frame_selection(const std::string& spec, std::in
         for (std::int64_t i = first; i < last; i += step) frames.push_back(i);
       }
     } catch (const std::exception&) {
-      throw BadInput(fmt::format("--frames: '{}' is not a frame index in [-{}, {}) or a slice start:stop[:step] (step > 0)",
+      throw InputError(fmt::format("--frames: '{}' is not a frame index in [-{}, {}) or a slice start:stop[:step] (step > 0)",
                                  item, total, total));
     }
   }
-  if (frames.empty()) throw BadInput(fmt::format("--frames '{}' selects no frame (the file has {})", spec, total));
+  if (frames.empty()) throw InputError(fmt::format("--frames '{}' selects no frame (the file has {})", spec, total));
   return frames;
 }
 

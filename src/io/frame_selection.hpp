@@ -1,7 +1,7 @@
 // The frames of a run's file that an analysis, an export or a picture uses, chosen by index
 // (negative indices count from the end), by a range, by a list of indices and slices, or all of
 // them.  Every index returned is a frame of the file, ≥ 0.  A choice that names no frame of the
-// file throws BadInput, whose message names the option it came from.
+// file throws InputError, whose message names the option it came from.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/bad_input.hpp"
+#include "io/io_error.hpp"
 
 namespace granule {
 

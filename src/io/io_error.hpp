@@ -1,8 +1,9 @@
 // The two exceptions of Granule's files.  IoError: a file Granule writes could not be created,
 // written, flushed, synced, closed or renamed (disk full); `granule` exits with code 4.
-// InputError: a file Granule reads is missing, unreadable, damaged or not what its schema says;
-// `granule` refuses it with code 2, before anything is written.  Both messages name the file, and
-// InputError the dataset or attribute and what was expected.
+// InputError: input that an analysis, an export, a picture or a run refuses before it writes
+// anything — a file that is missing, unreadable, damaged, foreign or not what its schema says, a
+// frame out of range, a choice the file cannot serve; `granule` exits with code 2.  Both messages
+// name the file, and InputError the dataset, attribute or option and what is allowed.
 #pragma once
 
 #include <cstring>

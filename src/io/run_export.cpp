@@ -23,10 +23,10 @@ namespace fs = std::filesystem;
 FieldGrid snapshot_field_grid(const SystemParams& p, const std::vector<int>& cells) {
   if (p.dimension == 3) {
     if (cells.empty()) return default_field_grid_3d(p.length_x, p.length_y, p.length_z, p.particles);
-    if (cells.size() != 3) throw BadInput("--cells of a 3D run needs three integers NX NY NZ");
+    if (cells.size() != 3) throw InputError("--cells of a 3D run needs three integers NX NY NZ");
     return {cells[0], cells[1], p.length_x, p.length_y, cells[2], p.length_z, 3};
   }
-  if (cells.size() == 3) throw BadInput("--cells of a 2D run needs two integers NX NY");
+  if (cells.size() == 3) throw InputError("--cells of a 2D run needs two integers NX NY");
   return cells.empty() ? automatic_picture_grid(p.particles, p.length_x, p.length_y)
                        : FieldGrid{cells[0], cells[1], p.length_x, p.length_y};
 }

@@ -34,7 +34,7 @@ ParticleExport plan_particle_export(const ExportRequest& request);
 
 // Writes the fields (fields_<k>.vti for one frame, else a fields.pvd series): from the run's
 // fields.h5 when it has one (or the input is a fields file), else computed from its snapshots.
-// Bad input (a missing file, a frame or --cells that do not fit) throws BadInput.
+// Bad input (a missing file, a frame or --cells that do not fit) throws InputError.
 void export_fields(const ExportRequest& request, const ExportWritten& written);
 
 }  // namespace granule

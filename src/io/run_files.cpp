@@ -12,13 +12,13 @@ namespace granule {
 namespace fs = std::filesystem;
 
 std::string locate_run_file(const std::string& run_dir_or_file, const std::string& name) {
-  if (!fs::exists(run_dir_or_file)) throw BadInput(fmt::format("{} does not exist (give a run directory or a file)", run_dir_or_file));
+  if (!fs::exists(run_dir_or_file)) throw InputError(fmt::format("{} does not exist (give a run directory or a file)", run_dir_or_file));
   if (!fs::is_directory(run_dir_or_file)) return run_dir_or_file;
   for (const std::string& candidate : {name, name + ".partial"}) {
     const fs::path path = fs::path(run_dir_or_file) / candidate;
     if (fs::exists(path)) return path.string();
   }
-  throw BadInput(fmt::format("{} has no {}", run_dir_or_file, name));
+  throw InputError(fmt::format("{} has no {}", run_dir_or_file, name));
 }
 
 std::string output_beside(const std::string& run_dir_or_file, const std::string& name) {
@@ -34,30 +34,23 @@ std::string snapshots_beside(const std::string& path) {
   return "";
 }
 
+// A file that is not HDF5, or a damaged one, is refused by the reading layer (InputError).
 std::string hdf5_format(const std::string& path) {
-  try {
-    h5::Handle file = h5::open_file(path);
-    const std::string format = H5Aexists(file.get(), "format") > 0 ? h5::read_string_attribute(file.get(), "format") : "";
-    file.close();
-    return format;
-  } catch (const IoError& error) {
-    throw BadInput(fmt::format("cannot read {} as HDF5: {}", path, error.what()));
-  }
+  h5::Handle file = h5::open_file(path);
+  const std::string format = h5::has_attribute(file.get(), "format") ? h5::read_string_attribute(file.get(), "format") : "";
+  file.close();
+  return format;
 }
 
 int hdf5_dimension(const std::string& path) {
-  try {
-    h5::Handle file = h5::open_file(path);
-    const int dimension = H5Aexists(file.get(), "dimension") > 0 ? h5::read_attribute<int>(file.get(), "dimension", H5T_NATIVE_INT) : 2;
-    file.close();
-    return dimension;
-  } catch (const IoError& error) {
-    throw BadInput(fmt::format("cannot read {} as HDF5: {}", path, error.what()));
-  }
+  h5::Handle file = h5::open_file(path);
+  const int dimension = h5::has_attribute(file.get(), "dimension") ? h5::read_attribute<int>(file.get(), "dimension", H5T_NATIVE_INT) : 2;
+  file.close();
+  return dimension;
 }
 
 void require_hdf5_format(const std::string& path, const char* format, const char* producer) {
-  if (hdf5_format(path) != format) throw BadInput(fmt::format("{} is not a {} file (written by {})", path, format, producer));
+  if (hdf5_format(path) != format) throw InputError(fmt::format("{} is not a {} file (written by {})", path, format, producer));
 }
 
 }  // namespace granule

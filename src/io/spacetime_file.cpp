@@ -93,7 +93,7 @@ SpacetimeSource spacetime_source(const std::string& input, const std::string& ch
       from = hdf5_format(input) == "granule-snapshots" ? "snapshots" : "fields";
     }
   }
-  if (from != "fields" && from != "snapshots") throw BadInput(fmt::format("--from {} is not one of fields, snapshots", from));
+  if (from != "fields" && from != "snapshots") throw InputError(fmt::format("--from {} is not one of fields, snapshots", from));
   const bool fields = from == "fields";
   const std::string path = locate_run_file(input, fields ? "fields.h5" : "snapshots.h5");
   require_hdf5_format(path, fields ? "granule-fields" : "granule-snapshots",
@@ -113,7 +113,7 @@ SpacetimeProfiles read_spacetime_profiles(const SpacetimeSource& source, const s
     const int binned = rows.value_or(default_field_grid(m.system.length_x, m.system.length_y, m.system.particles).ny);
     profiles = spacetime_from_snapshots(source.path, binned, relative);
   }
-  if (profiles.t.empty()) throw BadInput(fmt::format("{} has no complete frame yet", source.path));
+  if (profiles.t.empty()) throw InputError(fmt::format("{} has no complete frame yet", source.path));
   return profiles;
 }
 

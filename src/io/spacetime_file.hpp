@@ -25,7 +25,7 @@ void read_shear_protocol(const std::string& snapshots_path, SpacetimeProfiles& p
 
 // The file a run's profiles come from (a run directory, a fields file or a snapshot file): `from`
 // "fields" (fields.h5) or "snapshots" (snapshots.h5), or empty: fields.h5 when the run has one.
-// Throws BadInput for another `from`, a missing file or a file of another format.
+// Throws InputError for another `from`, a missing file or a file of another format.
 struct SpacetimeSource {
   std::string from;  // "fields" or "snapshots"
   std::string path;
@@ -34,7 +34,7 @@ SpacetimeSource spacetime_source(const std::string& run_dir_or_file, const std::
 
 // The profiles of every complete frame of the source: the `group` maps of a fields file, with U(t)
 // from the snapshots beside it, or the snapshots binned into `rows` rows (default: the rows of the
-// default coarse-graining grid).  Throws BadInput when no frame is complete yet.
+// default coarse-graining grid).  Throws InputError when no frame is complete yet.
 SpacetimeProfiles read_spacetime_profiles(const SpacetimeSource& source, const std::string& group,
                                           std::optional<int> rows, bool relative);
 

@@ -19,7 +19,7 @@ RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const PictureO
 void choose_spin_coloring(PictureOptions& options, bool coloring_chosen, const SnapshotMetadata& metadata) {
   if (!coloring_chosen && metadata.system.roughness.rough) options.coloring = DiskColoring::kSpin;
   if (options.coloring == DiskColoring::kSpin && !metadata.system.roughness.rough) {
-    throw BadInput("--color spin needs a run of rough grains (its snapshots have no spins)");
+    throw InputError("--color spin needs a run of rough grains (its snapshots have no spins)");
   }
 }
 

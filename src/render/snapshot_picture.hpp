@@ -14,11 +14,11 @@ namespace granule::render {
 RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const PictureOptions& options);
 
 // Rough grains are coloured by their spin unless the colouring was chosen (thesis Fig C.4); spin
-// colours for smooth grains throw BadInput.
+// colours for smooth grains throw InputError.
 void choose_spin_coloring(PictureOptions& options, bool coloring_chosen, const SnapshotMetadata& metadata);
 
 // Draws frame `frame` (negative counts from the end) of a 2D snapshot file to the PNG `out`, rough
-// grains by choose_spin_coloring; returns the frame's index.  A frame outside the file throws BadInput.
+// grains by choose_spin_coloring; returns the frame's index.  A frame outside the file throws InputError.
 std::int64_t write_snapshot_picture(const std::string& snapshots, std::int64_t frame, PictureOptions options,
                                     bool coloring_chosen, const std::string& out);
 

@@ -6,6 +6,7 @@
 //
 //   granule_file_fuzz READER ORIGINAL MUTANTS SEED WORK_DIR
 //   granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX        (one mutant, for the CLI fuzz test)
+//   granule_file_fuzz reseal CHECKPOINT                         (digests recomputed after a hand edit)
 //
 // READER: snapshots (a snapshots.h5), fields (a fields.h5), resume (ORIGINAL is a run directory;
 // its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does).
@@ -154,9 +155,14 @@ int main(int argc, char** argv) {
     std::puts(fuzz::write_mutant(argv[2], argv[3], std::stoull(argv[4]), std::stoull(argv[5]), {}).c_str());
     return 0;
   }
+  if (argc == 3 && std::string(argv[1]) == "reseal") {
+    fuzz::reseal_digests(argv[2]);
+    return 0;
+  }
   if (argc != 6) {
     std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume ORIGINAL MUTANTS SEED WORK_DIR\n"
-                         "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n");
+                         "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n"
+                         "       granule_file_fuzz reseal CHECKPOINT\n");
     return 2;
   }
   const std::string reader = argv[1];

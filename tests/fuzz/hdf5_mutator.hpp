@@ -17,6 +17,10 @@ struct MutationOptions {
   bool reseal_digests = false;
 };
 
+// Recomputes the digest of every checkpoint dataset of `path` (xxh3_64) from its values, as a
+// hostile user who edited them would.
+void reseal_digests(const std::string& path);
+
 // Writes mutant `index` of `original` to `mutant` and returns what was done to it, one line.
 std::string write_mutant(const std::string& original, const std::string& mutant, std::uint64_t seed, std::uint64_t index,
                          const MutationOptions& options);

@@ -129,6 +129,9 @@ int analyze_f1(const F1CommandOptions& o) {
       return kExitNoWindow;
     }
     for (const std::string& path : write_f1_outputs(o.out, run, results, thesis_comparison_csv(system, results))) fmt::print("wrote {}\n", path);
+  } catch (const InputError& refused) {  // a damaged or malformed input: nothing written
+    fmt::print(stderr, "granule analyze f1: error: {}\n", refused.what());
+    return kExitBadInput;
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
     throw;
   } catch (const std::bad_alloc&) {  // exit 5, by main

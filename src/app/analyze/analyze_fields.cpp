@@ -44,7 +44,7 @@ int analyze_fields(const FieldsOptions& o) {
   FieldGrid grid;
   try {
     grid = fields_from_snapshots_grid(head.metadata.system, o.cells);
-  } catch (const BadInput& error) {
+  } catch (const InputError& error) {
     fmt::print(stderr, "granule analyze fields: error: {}\n", error.what());
     return kExitBadInput;
   }

@@ -57,7 +57,7 @@ int analyze_spectra(const SpectraOptions& options) {
   std::vector<std::int64_t> frames;
   try {
     frames = parse_frame_selection(options.frames, first.frames);
-  } catch (const BadInput& error) {
+  } catch (const InputError& error) {
     return bad_spectra_input(error.what());
   }
   const SystemParams& system = first.metadata.system;
@@ -91,6 +91,9 @@ int analyze_spectra(const SpectraOptions& options) {
       fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
     }
     analysis.publish();
+  } catch (const InputError& refused) {  // a damaged or malformed input: nothing written
+    fmt::print(stderr, "granule analyze spectra: error: {}\n", refused.what());
+    return kExitBadInput;
   } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
     throw;
   } catch (const std::bad_alloc&) {  // exit 5, by main

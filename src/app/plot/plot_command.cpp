@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "io/bad_input.hpp"
 #include "io/io_error.hpp"
 
 namespace granule::app {
@@ -31,7 +30,7 @@ void finish_plot_command(const std::string& kind, const std::function<int()>& bo
   std::string message;
   try {
     code = body();
-  } catch (const BadInput& error) {
+  } catch (const InputError& error) {
     code = 2;
     message = error.what();
   } catch (const IoError& error) {

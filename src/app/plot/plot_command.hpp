@@ -23,7 +23,7 @@ void add_plot_sweep_command(CLI::App& plot);        // sweep (results.csv of gra
 // dimension only are refused for the other.
 std::vector<std::string> given_options(const CLI::App& command);
 
-// Runs a plot command's body and ends the program with its exit code: 2 on BadInput, 4 on IoError
+// Runs a plot command's body and ends the program with its exit code: 2 on InputError, 4 on IoError
 // (an output that cannot be written), 1 on any other error (messages prefixed with "granule plot
 // <kind>: error:").
 [[noreturn]] void finish_plot_command(const std::string& kind, const std::function<int()>& body);

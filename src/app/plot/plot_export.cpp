@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "app/plot/plot_command.hpp"
-#include "io/bad_input.hpp"
+#include "io/io_error.hpp"
 #include "io/run_export.hpp"
 #include "render/plot_scripts.hpp"
 
@@ -34,14 +34,14 @@ int export_particles(const ExportRequest& r) {
 
 int plot_export(const ExportRequest& r, const std::string& what) {
   if (r.format != "xyz" && r.format != "vtk" && r.format != "gsd") {
-    throw BadInput(fmt::format("--format {} is not one of xyz, gsd, vtk", r.format));
+    throw InputError(fmt::format("--format {} is not one of xyz, gsd, vtk", r.format));
   }
-  if (what != "particles" && what != "fields") throw BadInput(fmt::format("--what {} is not one of particles, fields", what));
+  if (what != "particles" && what != "fields") throw InputError(fmt::format("--what {} is not one of particles, fields", what));
   for (int n : r.cells) {
-    if (n < 1 || n > 4096) throw BadInput(fmt::format("--cells {} must be integers in [1, 4096]", fmt::join(r.cells, " ")));
+    if (n < 1 || n > 4096) throw InputError(fmt::format("--cells {} must be integers in [1, 4096]", fmt::join(r.cells, " ")));
   }
   if (what == "particles") return export_particles(r);
-  if (r.format != "vtk") throw BadInput("--what fields needs --format vtk (extended XYZ and GSD hold particles only)");
+  if (r.format != "vtk") throw InputError("--what fields needs --format vtk (extended XYZ and GSD hold particles only)");
   export_fields(r, print_written);
   return 0;
 }

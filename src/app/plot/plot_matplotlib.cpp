@@ -43,18 +43,18 @@ struct ScriptKind {
 
 int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
   render::FigureRequest r = a.figure;
-  if (r.dpi < 20 || r.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", r.dpi));
+  if (r.dpi < 20 || r.dpi > 600) throw InputError(fmt::format("--dpi {} is outside [20, 600]", r.dpi));
   r.input = locate_run_file(a.figure.input, kind.input_file);
   if (r.out.empty()) r.out = output_beside(a.figure.input, kind.output_file);
   if (kind.window_help != nullptr) r.window = a.window;
   int status = 0;
   if (std::string_view(kind.name) == "fields" && hdf5_dimension(r.input) == 3) {
     // The density isosurface coloured by V_x (Figs C.1–C.3).
-    if (r.quantities.size() > 1) throw BadInput("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
+    if (r.quantities.size() > 1) throw InputError("--quantities of a 3D run takes one field: the one whose isosurface is drawn");
     status = render::draw_isosurface(r, was_given(a, "--colormap"));
   } else {
     for (const char* option : kIsosurfaceOptions) {
-      if (was_given(a, option)) throw BadInput(fmt::format("{} is for 3D runs only", option));
+      if (was_given(a, option)) throw InputError(fmt::format("{} is for 3D runs only", option));
     }
     status = render::draw_figure(kind.script, r);
   }

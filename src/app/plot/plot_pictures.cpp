@@ -45,7 +45,7 @@ template <std::size_t N>
 void refuse_given(const PictureArguments& a, const char* const (&options)[N], const char* which) {
   for (const char* option : options) {
     if (was_given(a, option)) {
-      throw BadInput(fmt::format("{} is for {} runs only", option, which));
+      throw InputError(fmt::format("{} is for {} runs only", option, which));
     }
   }
 }
@@ -54,7 +54,7 @@ void refuse_given(const PictureArguments& a, const char* const (&options)[N], co
 int plot_config_3d(const PictureArguments& a, const std::string& snapshots) {
   refuse_given(a, kOptions2dOnly, "2D");
   if (was_given(a, "--color") && (a.color == "direction" || a.color == "field" || a.color == "spin")) {
-    throw BadInput(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
+    throw InputError(fmt::format("--color {} is for 2D runs; a 3D picture takes velocity_x, speed or none", a.color));
   }
   const std::string out = a.out.empty() ? output_beside(a.input, "configuration.png") : a.out;
   const int status = render::draw_config_3d(
@@ -85,17 +85,17 @@ void add_picture_options(CLI::App* command, PictureArguments& a) {
 
 render::PictureOptions picture_options(const PictureArguments& a) {
   render::PictureOptions o;
-  if (a.width < 16 || a.width > 20000) throw BadInput(fmt::format("--width {} is outside [16, 20000]", a.width));
+  if (a.width < 16 || a.width > 20000) throw InputError(fmt::format("--width {} is outside [16, 20000]", a.width));
   const auto coloring = render::parse_disk_coloring(a.color);
-  if (!coloring) throw BadInput(fmt::format("--color {} is not one of direction, speed, field, spin, none", a.color));
+  if (!coloring) throw InputError(fmt::format("--color {} is not one of direction, speed, field, spin, none", a.color));
   const auto& names = cell_field_names();
   if (std::find(names.begin(), names.end(), a.field) == names.end()) {
-    throw BadInput(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
+    throw InputError(fmt::format("--field {} is not one of {}", a.field, fmt::join(names, ", ")));
   }
   if (!a.cells.empty() && (a.cells[0] < 1 || a.cells[1] < 1 || a.cells[0] > 4096 || a.cells[1] > 4096)) {
-    throw BadInput(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
+    throw InputError(fmt::format("--cells {} {} must be two integers in [1, 4096]", a.cells[0], a.cells[1]));
   }
-  if (!(a.min_radius >= 0.0 && a.min_radius <= 10.0)) throw BadInput(fmt::format("--min-radius {} is outside [0, 10]", a.min_radius));
+  if (!(a.min_radius >= 0.0 && a.min_radius <= 10.0)) throw InputError(fmt::format("--min-radius {} is outside [0, 10]", a.min_radius));
   o.width_px = a.width;
   o.coloring = *coloring;
   o.field = a.field;
@@ -131,11 +131,11 @@ struct MovieArguments {
 
 int plot_movie(const MovieArguments& m) {
   const render::PictureOptions options = picture_options(m.picture);
-  if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw BadInput(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
-  if (m.stride < 1) throw BadInput(fmt::format("--stride {} must be at least 1", m.stride));
+  if (!(m.fps >= 0.1 && m.fps <= 120.0)) throw InputError(fmt::format("--fps {} is outside [0.1, 120]", m.fps));
+  if (m.stride < 1) throw InputError(fmt::format("--stride {} must be at least 1", m.stride));
   const std::string snapshots = locate_run_file(m.picture.input, "snapshots.h5");
   require_hdf5_format(snapshots, "granule-snapshots", "`granule run`");
-  if (hdf5_dimension(snapshots) == 3) throw BadInput("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
+  if (hdf5_dimension(snapshots) == 3) throw InputError("plot movie draws 2D runs only (a 3D run: plot config --frame K per frame)");
   refuse_given(m.picture, kOptions3dOnly, "3D");
   const std::string out = m.picture.out.empty() ? output_beside(m.picture.input, "movie.mp4") : m.picture.out;
   const render::MovieWritten movie =

@@ -34,22 +34,22 @@ struct SpacetimeArguments {
 };
 
 int plot_spacetime(const SpacetimeArguments& a) {
-  if (a.dpi < 20 || a.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
+  if (a.dpi < 20 || a.dpi > 600) throw InputError(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
   if (a.group != "instant" && a.group != "average") {
-    throw BadInput(fmt::format("--group {} is not one of instant, average", a.group));
+    throw InputError(fmt::format("--group {} is not one of instant, average", a.group));
   }
   if (a.rows && (*a.rows < 1 || *a.rows > kMaxRows)) {
-    throw BadInput(fmt::format("--rows {} is outside [1, {}]", *a.rows, kMaxRows));
+    throw InputError(fmt::format("--rows {} is outside [1, {}]", *a.rows, kMaxRows));
   }
   const SpacetimeSource source = spacetime_source(a.input, a.from);
   if (source.from == "fields" && (a.rows || a.relative)) {
-    throw BadInput("--rows and --relative apply to --from snapshots (fields.h5 has its own grid and frame)");
+    throw InputError("--rows and --relative apply to --from snapshots (fields.h5 has its own grid and frame)");
   }
   const SpacetimeProfiles profiles = read_spacetime_profiles(source, a.group, a.rows, a.relative);
 
   const std::string out = a.out.empty() ? output_beside(a.input, "spacetime.png") : a.out;
   const std::string data = a.data.empty() ? fs::path(out).replace_extension(".h5").string() : a.data;
-  if (data == out) throw BadInput(fmt::format("--data {} is the picture itself", data));
+  if (data == out) throw InputError(fmt::format("--data {} is the picture itself", data));
   if (const int status = render::draw_spacetime(profiles, out, data, a.dpi); status != 0) return status;
   fmt::print("wrote {} and {} ({} frames × {} rows, from {})\n", out, data, profiles.t.size(), profiles.y.size(),
              profiles.source);

@@ -20,7 +20,7 @@ struct SweepPlotArguments {
 };
 
 int plot_sweep(const SweepPlotArguments& a) {
-  if (a.dpi < 20 || a.dpi > 600) throw BadInput(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
+  if (a.dpi < 20 || a.dpi > 600) throw InputError(fmt::format("--dpi {} is outside [20, 600]", a.dpi));
   const std::string input = locate_run_file(a.input, "results.csv");
   const std::string out = a.out.empty() ? output_beside(a.input, "sweep.png") : a.out;
   std::vector<std::string> arguments{input,

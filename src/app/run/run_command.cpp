@@ -94,6 +94,7 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
   try {
     std::unique_ptr<RunSession<D>> session = or_failure([&] { return begin<D>(options, config, grid, out); });
     print_header(config, !resume && options.config_path.empty(), options.overrides.size());
+    for (const std::string& warning : driver::run_warnings(config)) fmt::print(stderr, "granule run: warning: {}\n", warning);
     const StopReason reason = session->run(InterruptSignals::flag());
     const nlohmann::json summary = session->finish(reason);
     const Simulation<D>& sim = session->simulation();
@@ -119,6 +120,10 @@ int run_in(const RunOptions& options, const RunConfig& config, const CellGrid& g
       const int signal = InterruptSignals::received();
       fmt::print(stderr, "granule run: interrupted by signal {}: checkpoint written; continue with\n  granule run --resume {}\n",
                  signal, out);
+      return kExitInterruptedBase + signal;
+    }
+    if (const int signal = InterruptSignals::received(); signal != 0) {  // it came after the last event
+      fmt::print(stderr, "granule run: interrupted by signal {} during the final writes, which completed\n", signal);
       return kExitInterruptedBase + signal;
     }
     if (reason == StopReason::kInelasticCollapse) {
