@@ -83,13 +83,31 @@ def save(fig, out, dpi, data=None, data_path=None):
     the numbers drawn (`data`) as JSON to `data_path` when it is given; both are renamed only once
     both are complete."""
     written = [(f"{out}.partial", out)]
-    fig.savefig(written[0][0], dpi=dpi, format="png")
-    plt.close(fig)
-    if data_path:
-        written.append((f"{data_path}.partial", data_path))
-        Path(written[1][0]).write_text(json.dumps(_plain(data)))
-    for partial, final in written:
-        os.replace(partial, final)
+    try:
+        fig.savefig(written[0][0], dpi=dpi, format="png")
+        plt.close(fig)
+        if data_path:
+            written.append((f"{data_path}.partial", data_path))
+            Path(written[1][0]).write_text(json.dumps(_plain(data)))
+        for partial, final in written:
+            os.replace(partial, final)
+    except OSError as error:  # an output that cannot be written: exit 4, as granule's own files
+        for partial, _ in written:
+            Path(partial).unlink(missing_ok=True)
+        print(f"granule plot: I/O error: cannot write {out}: {error}", file=sys.stderr)
+        sys.exit(4)
+
+
+def run(main):
+    """Runs a script's main.  What h5py, NumPy or the JSON reader raise while a damaged, truncated
+    or foreign input is read (a missing dataset or key, a wrong shape, a failed checksum, an array
+    too large to allocate) is bad input: exit 2 with the reason, nothing written."""
+    kind = Path(sys.argv[0]).stem
+    try:
+        sys.exit(main())
+    except (OSError, KeyError, ValueError, IndexError, MemoryError) as error:
+        source = sys.argv[1] if len(sys.argv) > 1 else "the input"
+        fail(kind, f"cannot read {source}: {type(error).__name__}: {error}")
 
 
 def open_h5(kind, path):

@@ -13,7 +13,7 @@ import math
 import numpy as np
 from scipy.special import erf
 
-from _common import angle_ticks, fail, figure, legend, open_h5, parser, require_format, save, text
+from _common import angle_ticks, fail, figure, legend, open_h5, parser, require_format, run, save, text
 
 KIND = "collisions"
 PANEL_WIDTH, PANEL_HEIGHT = 5.0, 4.5
@@ -196,4 +196,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from _common import fail, figure, open_h5, parser, require_format, resolve_frame, save, text
+from _common import fail, figure, open_h5, parser, require_format, resolve_frame, run, save, text
 
 KIND = "config"
 CHUNK = 8192  # spheres rasterised at once (memory: CHUNK × stencil fragments)
@@ -203,4 +203,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from _common import angle_ticks, figure, legend, open_h5, parser, require_format, resolve_index, save, text
+from _common import angle_ticks, figure, legend, open_h5, parser, require_format, resolve_index, run, save, text
 
 KIND = "f1"
 PANEL_WIDTH, PANEL_HEIGHT = 4.0, 3.6
@@ -297,4 +297,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from _common import open_h5, figure, fail, parser, resolve_frame, save, text
+from _common import fail, figure, open_h5, parser, resolve_frame, run, save, text
 from _isosurface import _shifted_rows, smooth
 
 KIND = "fields"
@@ -131,4 +131,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from _common import fail, figure, open_h5, parser, resolve_frame, save, text
+from _common import fail, figure, open_h5, parser, resolve_frame, run, save, text
 from _isosurface import isosurface, smooth
 
 KIND = "fields"
@@ -157,4 +157,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

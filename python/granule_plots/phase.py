@@ -2,7 +2,7 @@
 x and y against v_x and v_y, v_x against v_y, and x against y.  A 12 × 8 inch figure of six panels."""
 import numpy as np
 
-from _common import open_h5, fail, figure, parser, resolve_frame, save
+from _common import fail, figure, open_h5, parser, resolve_frame, run, save
 
 KIND = "phase"
 PANELS = [(0, 2, "x", "v_x"), (1, 2, "y", "v_x"), (2, 3, "v_x", "v_y"), (0, 3, "x", "v_y"), (1, 3, "y", "v_y"), (0, 1, "x", "y")]
@@ -34,4 +34,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -2,7 +2,7 @@
 for Lees-Edwards runs V_x is drawn beside the imposed mean flow u(y) = γ (y − L_y/2).  A 10 × 8 inch
 figure of four panels."""
 
-from _common import open_h5, figure, fail, parser, resolve_frame, save, text
+from _common import fail, figure, open_h5, parser, resolve_frame, run, save, text
 
 KIND = "profiles"
 PANELS = [("velocity_x", "(A) V_x"), ("velocity_y", "(B) V_y"), ("density", "(C) density ρ"), ("temperature", "(D) temperature T")]
@@ -35,4 +35,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -4,7 +4,7 @@ or logarithmic axes.  A 6.4 × 4.2 inch figure at 100 dpi."""
 import json
 import math
 
-from _common import fail, figure, legend, parser, save
+from _common import fail, figure, legend, parser, run, save
 
 KIND = "reproduce"
 
@@ -45,4 +45,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

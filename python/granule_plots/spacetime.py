@@ -5,7 +5,7 @@ them, when the snapshots store it, the protocol's image velocity U(t).  Reads th
 HDF5 file that `granule plot spacetime` writes (docs/plots.md).  A 10 × 9 inch figure."""
 import numpy as np
 
-from _common import fail, figure, open_h5, parser, require_format, save, text
+from _common import fail, figure, open_h5, parser, require_format, run, save, text
 
 KIND = "spacetime"
 SOURCES = {
@@ -123,4 +123,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

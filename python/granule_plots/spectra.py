@@ -12,7 +12,7 @@ import math
 import numpy as np
 from matplotlib.colors import LogNorm
 
-from _common import figure, legend, open_h5, parser, require_format, resolve_frame, save, text
+from _common import figure, legend, open_h5, parser, require_format, resolve_frame, run, save, text
 
 KIND = "spectra"
 MAPS = [("R", "(C) R = |ρ̃|² (3.13)"), ("Px", "(D) P_x = |p̃_x|² (3.14)"), ("Py", "(E) P_y = |p̃_y|² (3.15)")]
@@ -123,4 +123,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -11,7 +11,7 @@ from collections import defaultdict
 
 import numpy as np
 
-from _common import fail, figure, parser, save
+from _common import fail, figure, parser, run, save
 
 KIND = "sweep"
 THEORY = {"T_fit_3.1": "(3.1) Tan's fit", "T_JR_3.2": "(3.2) Jenkins–Richman"}
@@ -102,4 +102,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -6,7 +6,7 @@ import csv
 
 import numpy as np
 
-from _common import fail, figure, parser, run_summary, save
+from _common import fail, figure, parser, run, run_summary, save
 
 
 KIND = "timeseries"
@@ -91,4 +91,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

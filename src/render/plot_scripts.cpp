@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/hdf5_util.hpp"
+
 extern char** environ;
 
 namespace granule::render {
@@ -54,6 +56,11 @@ bool program_in_path(const std::string& name) {
 }
 
 int run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
+  // An HDF5 input is opened through Granule's reading layer first: a file whose structure crashes
+  // or hangs the HDF5 library is refused there (io/hdf5_util.hpp, open_file), never met by h5py.
+  if (!arguments.empty() && fs::path(arguments[0]).extension() == ".h5" && fs::is_regular_file(arguments[0])) {
+    h5::open_file(arguments[0]).close();
+  }
   const fs::path path = plot_scripts_root() / "granule_plots" / (script + ".py");
   if (!fs::exists(path)) throw std::runtime_error(fmt::format("the plot script {} is missing", path.string()));
   std::vector<std::string> argv{GRANULE_SYSTEM_PYTHON, path.string()};

@@ -7,7 +7,8 @@ flipped, bytes zeroed, files cut short — and given to each reader:
   (snapshots.h5, fields.h5, and checkpoint.h5 on resume, half of those edits with their digests
   recomputed as a hostile user would), each read cleanly or refused, never a crash, a hang or
   another error;
-- through the command line: a sample of the mutants given to `granule analyze`, `plot` and
+- through the command line: a sample of the mutants (snapshots.h5, checkpoint.h5, and fields.h5
+  and collisions.h5, which figure scripts read with h5py) given to `granule analyze`, `plot` and
   `run --resume`, each exiting with 0 or 2 within a time limit and writing nothing outside its
   output.
 
@@ -76,12 +77,19 @@ def commands(run, mutant_dir, out):
             ["analyze", "collisions", mutant_dir, "--frame", "-1", "--out", out / "collisions"],
         ],
         "checkpoint.h5": [["run", "--resume", mutant_dir]],
+        # Read by the figure scripts (h5py) after Granule's own reading layer has opened them.
+        "fields.h5": [
+            ["plot", "fields", mutant_dir / "fields.h5", "--out", out / "fields.png"],
+            ["plot", "export", mutant_dir / "fields.h5", "--format", "vtk", "--out", out / "fields.vti"],
+        ],
+        "collisions.h5": [["plot", "collisions", mutant_dir / "collisions.h5", "--out", out / "collisions.png"]],
     }
 
 
 for name, out in originals.items():
-    for target in ("snapshots.h5", "checkpoint.h5"):
-        for index in range(CLI_MUTANTS):
+    for target in ("snapshots.h5", "checkpoint.h5", "fields.h5", "collisions.h5"):
+        # A figure takes seconds: fewer mutants for the files only figures read.
+        for index in range(CLI_MUTANTS if target in ("snapshots.h5", "checkpoint.h5") else min(CLI_MUTANTS, 4)):
             mutant_dir = WORK / f"cli_{name}" / "run"
             shutil.rmtree(mutant_dir.parent, ignore_errors=True)
             shutil.copytree(out, mutant_dir)

@@ -74,20 +74,30 @@ def fixed(text):
 
 
 def write_run(run, particles, box, shear_velocity, cells, frames=3, seed=5):
-    """snapshots.h5 and fields.h5 of a synthetic sheared 3D run: a dense sheet across y = L_y/2."""
+    """snapshots.h5 and fields.h5 of a synthetic sheared 3D run: a dense sheet across y = L_y/2 (every
+    dataset and attribute of the schema, since granule reads them as it reads its own files)."""
     rng = np.random.default_rng(seed)
     run.mkdir(parents=True)
     with h5py.File(run / "snapshots.h5", "w") as f:
         f.attrs.update({"format": fixed("granule-snapshots"), "granule_version": fixed("test"), "dimension": 3,
-                        "particles": particles, "diameter": 0.02, "box": np.array(box), "restitution": 0.8,
-                        "tc_duration": 0.0, "boundary": fixed("lees-edwards"), "shear_velocity": shear_velocity, "seed": 1})
+                        "particles": particles, "diameter": 0.03, "box": np.array(box), "restitution": 0.8,
+                        "tc_duration": 0.0, "boundary": fixed("lees-edwards"), "shear_velocity": shear_velocity,
+                        "seed": np.uint64(1), "packing_fraction": 0.1})
         positions = rng.random((frames, particles, 3)) * np.array(box)
         velocities = 0.1 * rng.standard_normal((frames, particles, 3))
         velocities[..., 0] += shear_velocity / box[1] * (positions[..., 1] - box[1] / 2)
-        f["positions"], f["velocities"] = positions, velocities
-        for name in ("time", "collisions_per_particle", "shear_offset", "shear_velocity"):
-            f[name] = np.arange(frames, dtype=float)
+        # Per-frame datasets grow along their first axis, as the run writes them.
+        def frames_of(name, values):
+            f.create_dataset(name, data=values, maxshape=(None, *values.shape[1:]))
+        frames_of("positions", positions)
+        frames_of("velocities", velocities)
+        for name in ("time", "collisions_per_particle", "shear_offset", "shear_velocity", "strain", "strain_reference",
+                     "strain_at_reference"):
+            frames_of(name, np.arange(frames, dtype=float) * (-1.0 if name == "strain_reference" else 1.0))
+        for name in ("collisions", "events"):
+            frames_of(name, 100 * np.arange(frames, dtype=np.int64))
         f["diameters"] = 0.01 + 0.02 * rng.random(particles)
+        f["masses"] = (f["diameters"][()] / 0.02) ** 3
     x, y, z = cell_centres(cells, box)
     with h5py.File(run / "fields.h5", "w") as f:
         f.attrs.update({"format": fixed("granule-fields"), "source": fixed("run"), "boundary": fixed("lees-edwards"),
