@@ -1,10 +1,15 @@
 #include "bindings/interactive_run.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <stdexcept>
 
 #include "granule/version.hpp"
+#include "io/input_ranges.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule::bindings {
@@ -51,16 +56,54 @@ StopReason InteractiveRun<D>::equilibrate(const std::function<bool()>& keep_goin
 }
 
 template <int D>
-StopReason InteractiveRun<D>::run(const RunLimits& limits, const std::function<bool()>& keep_going) {
+RunTargets InteractiveRun<D>::targets(const RunLimits& limits) const {
+  const Simulation<D>& sim = run_.engine();
+  const bool given = limits.collisions_per_particle || limits.time;
+  // The names in the messages: the argument of run(), or the configuration's key.
+  const std::string c_name = given ? "until_collisions_per_particle" : "the configuration's run.until_collisions_per_particle";
+  const std::string t_name = given ? "until_time" : "the configuration's run.until_time";
+  const std::optional<double> c = given ? limits.collisions_per_particle : config_.until_collisions_per_particle;
+  const std::optional<double> t = given ? limits.time : config_.until_time;
+  RunTargets targets;
+  if (c) {
+    // The range of the configuration's collision counts (io/config.cpp): from one collision to
+    // 2^62, so that the engine's int64 counters hold the target and a chunk beyond it.
+    const auto n = static_cast<double>(config_.system.particles);
+    const NumberRange counts{1.0 / n, kMaxCollisions / n};
+    if (!counts.contains(*c)) {
+      throw std::invalid_argument(fmt::format("{} = {}: must be a number of collisions per particle in {} for N = {} "
+                                              "(from one collision, c·N ≥ 1, to 2^62 collisions)",
+                                              c_name, *c, counts.text(), config_.system.particles));
+    }
+    targets.collisions = driver::collisions_for(config_, c);
+    if (targets.collisions <= sim.collisions()) {
+      throw std::invalid_argument(fmt::format("{} = {} is reached already: the run is at c = {} ({} collisions); "
+                                              "targets are absolute, counted from the start of production",
+                                              c_name, *c, sim.collisions_per_particle(), sim.collisions()));
+    }
+  }
+  if (t) {
+    if (!std::isfinite(*t) || *t <= 0.0) {
+      throw std::invalid_argument(fmt::format("{} = {}: must be a time in (0, ∞)", t_name, *t));
+    }
+    targets.time = *t;
+    if (targets.time <= sim.time()) {
+      throw std::invalid_argument(fmt::format("{} = {} is reached already: the run is at t = {}; targets are absolute, "
+                                              "counted from the start of production", t_name, *t, sim.time()));
+    }
+  }
+  return targets;
+}
+
+template <int D>
+StopReason InteractiveRun<D>::run(const RunTargets& targets, const std::function<bool()>& keep_going) {
   if (!in_production()) throw std::logic_error("InteractiveRun::run before equilibrate");
   const auto start = std::chrono::steady_clock::now();
   const Simulation<D>& sim = run_.engine();
-  const std::int64_t until_collisions = driver::collisions_for(
-      config_, limits.collisions_per_particle ? limits.collisions_per_particle : config_.until_collisions_per_particle);
-  const double until_time = limits.time ? *limits.time : config_.until_time.value_or(driver::kInf);
+  const std::int64_t until_collisions = targets.collisions;
+  const double until_time = targets.time;
   const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);
-  // A limit already reached (the loop runs no event) is reported as such.
-  StopReason reason = sim.time() >= until_time ? StopReason::kTimeReached : StopReason::kCollisionsReached;
+  StopReason reason = StopReason::kCollisionsReached;
   while (sim.collisions() < until_collisions && sim.time() < until_time) {
     if (!keep_going()) {
       reason = StopReason::kInterrupted;
