@@ -127,18 +127,35 @@ nlohmann::json InteractiveRun<D>::summary(StopReason reason) const {
   return driver::summary_json(config_, sim, grid_, reason, facts, samples());
 }
 
+namespace {
+
+// A frame may be appended only to a file of the same system: the writer reopens a published file
+// as `path`.partial and a refused frame would leave it under that name.  So the file's metadata
+// is read and compared first.
+void check_appendable(const std::string& path, const SnapshotMetadata& ours) {
+  const SnapshotRead existing = read_snapshot(path);
+  const SnapshotMetadata& theirs = existing.metadata;
+  const SystemParams& a = theirs.system;
+  const SystemParams& b = ours.system;
+  const bool same = a.dimension == b.dimension && a.particles == b.particles && a.length_x == b.length_x &&
+                    a.length_y == b.length_y && a.length_z == b.length_z && a.roughness.rough == b.roughness.rough &&
+                    (a.tc_duration > 0.0) == (b.tc_duration > 0.0) &&
+                    existing.frame.particles.diameter == ours.diameters;
+  if (!same) {
+    throw std::invalid_argument(fmt::format("{} holds snapshots of another system ({}D, N = {}, box {} × {}): a frame "
+                                            "of this run ({}D, N = {}) is not appended to it", path, a.dimension,
+                                            a.particles, a.length_x, a.length_y, b.dimension, b.particles));
+  }
+}
+
+}  // namespace
+
 template <int D>
 void InteractiveRun<D>::write_snapshot(const std::string& path) const {
   const Simulation<D>& sim = run_.engine();
   const ParticleState now = sim.state();
   const SnapshotFrame frame{now, sim.clock_state(), sim.collisions_per_particle(), sim.shear_offset(), sim.strain(),
                             sim.image_velocity()};
-  if (std::filesystem::exists(path)) {
-    SnapshotWriter writer(path);
-    writer.append(frame);
-    writer.finish();
-    return;
-  }
   SnapshotMetadata metadata;
   metadata.system = config_.system;
   metadata.packing_fraction = config_.packing_fraction;
@@ -147,6 +164,13 @@ void InteractiveRun<D>::write_snapshot(const std::string& path) const {
   metadata.version = kVersion;
   metadata.diameters = now.diameter;
   metadata.masses = now.mass;
+  if (std::filesystem::exists(path)) {
+    check_appendable(path, metadata);
+    SnapshotWriter writer(path);
+    writer.append(frame);
+    writer.finish();
+    return;
+  }
   SnapshotWriter writer(path, metadata);
   writer.append(frame);
   writer.finish();
