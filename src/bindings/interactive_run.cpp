@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <csignal>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "granule/version.hpp"
 #include "io/input_ranges.hpp"
@@ -24,6 +28,46 @@ RunConfig parsed_or_thrown(const ConfigResult& parsed) {
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// While it lives, the engine is paused (StopReason::kInterrupted after a whole event, a stop that
+// changes nothing of the trajectory) every kInterval of wall time, so that the loops below ask
+// keep_going (Ctrl-C) that often.  Chunks of collisions alone do not bound the wait: a gas that
+// falls freely under gravity, or one whose grains no longer meet, runs events without collisions.
+template <int D>
+class Heartbeat {
+ public:
+  static constexpr std::chrono::milliseconds kInterval{100};
+
+  explicit Heartbeat(Simulation<D>& sim) : sim_(sim), thread_([this] { beat(); }) { sim_.set_interrupt_flag(&paused_); }
+  ~Heartbeat() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_one();
+    thread_.join();
+    sim_.set_interrupt_flag(nullptr);
+  }
+  Heartbeat(const Heartbeat&) = delete;
+  Heartbeat& operator=(const Heartbeat&) = delete;
+
+  // After the engine paused: let it run on.
+  void resume() { paused_ = 0; }
+
+ private:
+  void beat() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, kInterval, [this] { return done_; })) paused_ = 1;
+  }
+
+  Simulation<D>& sim_;
+  // Read by the engine before each event (the flag it takes is a signal handler's kind).
+  volatile std::sig_atomic_t paused_ = 0;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
+};
 
 }  // namespace
 
@@ -44,12 +88,14 @@ StopReason InteractiveRun<D>::equilibrate(const std::function<bool()>& keep_goin
   const auto start = std::chrono::steady_clock::now();
   const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);
   StopReason reason = StopReason::kCollisionsReached;
+  Heartbeat<D> heartbeat(run_.engine());
   while (!in_production()) {
     if (!keep_going()) {
       reason = StopReason::kInterrupted;
       break;
     }
     reason = run_.prerun(chunk);
+    heartbeat.resume();
   }
   wall_seconds_ += seconds_since(start);
   return reason;
@@ -104,12 +150,14 @@ StopReason InteractiveRun<D>::run(const RunTargets& targets, const std::function
   const double until_time = targets.time;
   const std::int64_t chunk = std::max<std::int64_t>(1000, config_.system.particles / 4);
   StopReason reason = StopReason::kCollisionsReached;
+  Heartbeat<D> heartbeat(run_.engine());
   while (sim.collisions() < until_collisions && sim.time() < until_time) {
     if (!keep_going()) {
       reason = StopReason::kInterrupted;
       break;
     }
     reason = run_.advance({}, {std::min(until_collisions, sim.collisions() + chunk), until_time});
+    heartbeat.resume();
     if (reason == StopReason::kInelasticCollapse || reason == StopReason::kNoEvents) break;
   }
   // The last row of a run's end, as RunSession::finish takes it.
