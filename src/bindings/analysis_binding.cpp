@@ -210,6 +210,12 @@ subtract_shear_profile the velocities are taken relative to u(y) = γ(y − L_y/
 array [iy, ix] (2D) or [iz, iy, ix] (3D): count, density, velocity_x, velocity_y, temperature
 (T per degree of freedom, eq 1.3), kinetic_xx/xy/yy, pressure_kinetic, vorticity,
 heat_flux_kinetic_x/y (and the z components in 3D), the names of fields.h5.
+
+Inputs are checked before anything is copied: arrays of real numbers (TypeError otherwise), finite
+velocities, positive masses, positions with 0 ≤ x ≤ L per axis, box lengths in [1e-30, 1e30]
+within a factor 1e9 of one another, cells integers in [1, 16384], a finite U and Δ in [0, L_x]
+(ValueError, naming the first bad entry); a grid or copy larger than the available memory raises
+MemoryError.
 )doc");
   m.def("spectra", &power_spectra, py::arg("positions"), py::arg("velocities"), py::arg("box"),
         py::arg("masses") = py::none(), py::arg("shear_velocity") = 0.0, py::arg("shear_offset") = 0.0,
@@ -222,6 +228,10 @@ ring centres k, with the number of modes per ring, the ideal-gas levels ⟨R⟩ 
 density mode (its |k|, angle, length 2π/|k| and significance) and the mode maps.  max_mode M
 (default 64 in 2D, 32 in 3D) bounds the modes |l|, |m| (, |n|) ≤ M; method "fast" (gridded FFT,
 ~1e-7 relative) or "exact" (direct sums).
+
+The arrays, box, U and Δ are checked as by cell_fields; dk must be a finite wavenumber > 0 that
+makes at most 2^32 annuli.  FFT grids, mode maps and copies larger than the available memory
+raise MemoryError before they are allocated.
 )doc");
 }
 
