@@ -86,11 +86,12 @@ class DirectoryInUse {
 
 template <int D>
 nlohmann::json run_session(const RunConfig& config, const std::string& out) {
+  // From the start: a Ctrl-C while the initial state is made stops the run before its first event.
+  const SigintToFlag signals;
   const CellGrid grid = driver::run_cell_grid(config);
   const driver::RunStart start = driver::run_start(config);
   write_file_atomically(out + "/config.toml", to_toml(config));
   driver::RunSession<D> session(config, grid, out, start);
-  const SigintToFlag signals;
   return session.finish(session.run(&interrupt_flag));
 }
 
