@@ -110,7 +110,7 @@ PySimulation& simulation_of(py::handle self) {
   if (!holder.holder_constructed()) {
     throw py::type_error("this granule.Simulation was never initialised (its __init__ did not run)");
   }
-  PySimulation& simulation = holder.value_ptr<PySimulation>()[0];
+  PySimulation& simulation = *holder.value_ptr<PySimulation>();
   if (simulation.running()) {
     throw std::runtime_error(
         "Simulation is being run from another thread (or this is a signal handler during its run()): "
@@ -235,8 +235,8 @@ t > 0.  A limit the run has reached already (c or t at or below the present valu
 ValueError with the present c or t: such a run would do nothing.
 
 The GIL is released while the engine runs; Ctrl-C stops it after the current chunk of
-max(1000, N/4) collisions (the state stays consistent and can be run further) and raises
-KeyboardInterrupt.  The time series gains its scheduled rows (output.every_*) and a last row at
+max(1000, N/4) collisions or within 0.1 s, whichever comes first (the state stays consistent and
+can be run further), and raises KeyboardInterrupt.  The time series gains its scheduled rows (output.every_*) and a last row at
 the stop.  While one thread runs a Simulation, every call of that Simulation from another thread
 raises RuntimeError (it does not wait): one Simulation serves one call at a time.
 )doc")
