@@ -31,9 +31,14 @@ def run_directory(config, out, overrides=()):
     but for wall times, and `granule run --resume OUT` continues it.  `out` must be empty or
     missing.  Ctrl-C stops the run after the current event, writes its checkpoint and outputs as
     the command line does, and raises KeyboardInterrupt.  Returns summary.json as a dict.
+
+    Configurations are taken and refused as by Simulation (ConfigError, OSError for a path,
+    MemoryError for a run larger than the available memory).  Calls from several threads run side
+    by side, each into its own directory (one that another thread is writing raises RuntimeError);
+    Ctrl-C stops all of them.
     """
+    if isinstance(overrides, (str, bytes)):
+        raise TypeError("overrides must be a list of 'section.key=value' strings, not one string")
     out = Path(out)
-    if out.exists() and any(out.iterdir()):
-        raise FileExistsError(f"{out} holds files: a run directory must be empty")
-    out.mkdir(parents=True, exist_ok=True)
-    return _granule._run_directory(config if isinstance(config, dict) else str(config), str(out), list(overrides))
+    out.mkdir(parents=True, exist_ok=True)  # its emptiness is checked as the run claims it
+    return _granule._run_directory(config, out, list(overrides))

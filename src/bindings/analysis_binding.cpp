@@ -2,13 +2,17 @@
 // coarse-grained cell fields (analysis/cell_fields.hpp, thesis §1.4.3) and
 // Fourier spectra of mass and momentum (spectra/, thesis §2.2 and §3.2.1), the
 // computations behind `granule analyze fields|spectra`.
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "analysis/cell_fields.hpp"
 #include "bindings/bindings.hpp"
+#include "bindings/input_checks.hpp"
 #include "bindings/numpy_arrays.hpp"
+#include "io/input_ranges.hpp"
 #include "spectra/dominant_mode.hpp"
 #include "spectra/power_spectra.hpp"
 #include "spectra/spectral_transforms.hpp"
@@ -19,30 +23,60 @@ namespace py = pybind11;
 
 namespace {
 
-struct Box {
-  double length_x = 1.0, length_y = 1.0, length_z = 1.0;
-};
+// Coarse-graining cells per axis: those of `granule analyze fields --cells`.
+constexpr int kMaxFieldCells = 1 << 14;
+// The bytes a cell of the field grid takes: CellMoments' sums and CellFields' fields (about 20
+// each, analysis/cell_fields.hpp) and the NumPy copies of the fields, 8 bytes each, rounded up.
+constexpr double kFieldBytesPerCell = 64 * 8.0;
+// Annulus widths are refused below a width that makes more than 2^32 annuli (their count is a
+// size_t); fewer are held to the memory check, kAnnulusBytes each (the k, mode counts and sums).
+constexpr double kMaxAnnuli = 4294967296.0;
+constexpr double kAnnulusBytes = 8 * 8.0;
+// The bytes of each mode: its complex sums of mass and momentum, the power maps and their NumPy
+// copies.
+constexpr double kSpectraBytesPerMode = 192.0;
 
-Box box_of(const std::vector<double>& box, int dimension) {
-  if (static_cast<int>(box.size()) != dimension)
-    throw std::invalid_argument("box must have one length per axis of positions");
-  return {box[0], box[1], dimension == 3 ? box[2] : 1.0};
+// An integer argument in [low, high]: a Python int or anything with __index__ (NumPy integers),
+// not a float.  `name` names it in errors.
+int integer_argument(py::handle value, const std::string& name, int low, int high) {
+  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!index) {
+    PyErr_Clear();
+    throw py::type_error(fmt::format("{} must be an integer, not {}", name, type_name(value)));
+  }
+  int overflow = 0;
+  const long long result = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+  if (overflow != 0 || result < low || result > high) {
+    throw py::value_error(fmt::format("{} = {}: must be an integer in [{}, {}]", name,
+                                      overflow != 0 ? "an integer beyond 64 bits" : std::to_string(result), low, high));
+  }
+  return static_cast<int>(result);
 }
 
-FieldGrid field_grid(const std::optional<std::vector<int>>& cells, const Box& box, int dimension,
-                     std::size_t particles) {
+// A finite double in `range`, else ValueError naming it.
+double checked(double value, const NumberRange& range, const char* name) {
+  if (!range.contains(value)) throw py::value_error(fmt::format("{} = {}: must be in {}", name, value, range.text()));
+  return value;
+}
+
+FieldGrid field_grid(const py::object& cells, const Box& box, int dimension, std::size_t particles) {
   const auto n = static_cast<std::int64_t>(particles);
-  if (!cells) {
+  if (cells.is_none()) {
     return dimension == 3 ? default_field_grid_3d(box.length_x, box.length_y, box.length_z, n)
                           : default_field_grid(box.length_x, box.length_y, n);
   }
-  if (static_cast<int>(cells->size()) != dimension)
-    throw std::invalid_argument("cells must be (nx, ny) in 2D, (nx, ny, nz) in 3D");
-  for (int c : *cells) {
-    if (c < 1 || c > (1 << 14)) throw std::invalid_argument("cells must be integers in [1, 16384]");
+  if (!py::isinstance<py::sequence>(cells) || py::isinstance<py::str>(cells)) {
+    throw py::type_error(fmt::format("cells must be a sequence of integers, not {}", type_name(cells)));
   }
-  if (dimension == 3) return {(*cells)[0], (*cells)[1], box.length_x, box.length_y, (*cells)[2], box.length_z, 3};
-  return {(*cells)[0], (*cells)[1], box.length_x, box.length_y};
+  const py::sequence counts = cells;
+  if (static_cast<int>(py::len(counts)) != dimension)
+    throw py::value_error("cells must be (nx, ny) in 2D, (nx, ny, nz) in 3D");
+  int c[3] = {1, 1, 1};
+  for (int a = 0; a < dimension; ++a) {
+    c[a] = integer_argument(counts[static_cast<std::size_t>(a)], fmt::format("cells[{}]", a), 1, kMaxFieldCells);
+  }
+  if (dimension == 3) return {c[0], c[1], box.length_x, box.length_y, c[2], box.length_z, 3};
+  return {c[0], c[1], box.length_x, box.length_y};
 }
 
 // A per-cell field as an array indexed [iy, ix] (2D) or [iz, iy, ix] (3D).
@@ -54,13 +88,27 @@ Array cell_array(const std::vector<double>& values, const FieldGrid& grid) {
   return array;
 }
 
-py::dict cell_fields(const Array& positions, const Array& velocities, const std::vector<double>& box,
-                     const std::optional<std::vector<int>>& cells, const py::object& masses, double shear_velocity,
-                     double shear_offset, bool subtract_shear_profile) {
-  const ParticleState state = particle_state(positions, velocities, masses);
-  const Box lengths = box_of(box, state.dimension);
-  const FieldGrid grid = field_grid(cells, lengths, state.dimension, state.size());
-  const ShearFrame frame{lengths.length_x, lengths.length_y, shear_velocity};
+// The shear of the frame: U a speed (0 or within the engine's range), Δ within [0, L_x] as
+// Simulation.shear_offset gives it.
+ShearFrame shear_frame(const Box& box, double shear_velocity, double shear_offset) {
+  if (shear_velocity != 0.0 && !kSpeedRange.contains(std::abs(shear_velocity))) {
+    throw py::value_error(fmt::format("shear_velocity = {}: |U| must be 0 or in {}", shear_velocity, kSpeedRange.text()));
+  }
+  checked(shear_offset, NumberRange{0.0, box.length_x}, "shear_offset");
+  return {box.length_x, box.length_y, shear_velocity};
+}
+
+py::dict cell_fields(const py::object& positions, const py::object& velocities, const py::object& box,
+                     const py::object& cells, const py::object& masses, double shear_velocity, double shear_offset,
+                     bool subtract_shear_profile) {
+  const ConfigurationArrays arrays = configuration_arrays(positions, velocities, masses);
+  const Box lengths = box_argument(box, arrays.dimension);
+  const ShearFrame frame = shear_frame(lengths, shear_velocity, shear_offset);
+  const FieldGrid grid = field_grid(cells, lengths, arrays.dimension, arrays.particles);
+  require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle +
+                     static_cast<double>(grid.cells()) * kFieldBytesPerCell,
+                 fmt::format("cell_fields of N = {} on {} cells", arrays.particles, grid.cells()));
+  const ParticleState state = particle_state(arrays, lengths);
   CellMoments moments(grid);
   moments.add(state, frame, subtract_shear_profile);
   const CellFields fields = fields_from_moments(moments, frame, shear_offset, subtract_shear_profile);
@@ -87,13 +135,14 @@ py::dict dominant(const spectra::DominantMode& mode) {
   return out;
 }
 
-py::dict power_spectra(const Array& positions, const Array& velocities, const std::vector<double>& box,
+py::dict power_spectra(const py::object& positions, const py::object& velocities, const py::object& box,
                        const py::object& masses, double shear_velocity, double shear_offset,
                        std::optional<int> max_mode, const std::string& method, bool subtract_shear_profile,
                        bool exclude_ky_axis, std::optional<double> dk) {
-  const ParticleState state = particle_state(positions, velocities, masses);
-  const int d = state.dimension;
-  const Box lengths = box_of(box, d);
+  const ConfigurationArrays arrays = configuration_arrays(positions, velocities, masses);
+  const int d = arrays.dimension;
+  const Box lengths = box_argument(box, d);
+  const ShearFrame frame = shear_frame(lengths, shear_velocity, shear_offset);
   if (method != "fast" && method != "exact") throw std::invalid_argument("method must be \"fast\" or \"exact\"");
   spectra::TransformOptions options;
   options.max_mode = max_mode.value_or(d == 3 ? 32 : 64);  // the defaults of `granule analyze spectra`
@@ -102,14 +151,29 @@ py::dict power_spectra(const Array& positions, const Array& velocities, const st
   }
   options.method = method == "exact" ? spectra::SpectralMethod::exact : spectra::SpectralMethod::fast;
   options.subtract_shear_profile = subtract_shear_profile;
-  const ShearFrame frame{lengths.length_x, lengths.length_y, shear_velocity};
   const spectra::ReciprocalLattice lattice = spectra::lattice_for_frame(frame, shear_offset, d, lengths.length_z);
+  const double width =
+      dk ? checked(*dk, NumberRange{0.0, kUnbounded, true, true}, "dk")
+         : spectra::default_annulus_width(spectra::lattice_for_frame(frame, 0.0, d, lengths.length_z));
+  const double radius = lattice.complete_radius(options.max_mode);
+  const double annuli = std::floor(radius / width);
+  if (!(annuli <= kMaxAnnuli)) {
+    throw py::value_error(fmt::format("dk = {}{}: more than 2^32 annuli up to k = {}: choose a wider dk", width,
+                                      dk ? "" : " (the default, 2π/L_max)", radius));
+  }
+  // The memory of the transforms (the FFT grids of the fast method: 2D a padded real grid of the
+  // fields and two complex planes, 3D one complex grid and its transform) and of the modes.
+  const double modes = std::pow(2.0 * options.max_mode + 1.0, d);
+  const double grid_points = options.method == spectra::SpectralMethod::fast
+                                 ? std::pow(static_cast<double>(spectra::fft_grid_size(options.max_mode, options.gridding)), d)
+                                 : 0.0;
+  require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle + grid_points * (d == 3 ? 32.0 : 64.0) +
+                     modes * kSpectraBytesPerMode + annuli * kAnnulusBytes,
+                 fmt::format("spectra of N = {} with max_mode = {}", arrays.particles, options.max_mode));
+  const ParticleState state = particle_state(arrays, lengths);
   const spectra::PowerMaps maps =
       spectra::power_maps(spectra::transform_fields(state, frame, lattice, options), exclude_ky_axis);
-  const double width =
-      dk.value_or(spectra::default_annulus_width(spectra::lattice_for_frame(frame, 0.0, d, lengths.length_z)));
-  const spectra::AnnulusSpectrum annulus =
-      spectra::annulus_sums(maps, width, lattice.complete_radius(options.max_mode));
+  const spectra::AnnulusSpectrum annulus = spectra::annulus_sums(maps, width, radius);
   py::dict out;
   out["dk"] = annulus.dk;
   out["k"] = read_only_vector(annulus.k);
@@ -146,6 +210,12 @@ subtract_shear_profile the velocities are taken relative to u(y) = γ(y − L_y/
 array [iy, ix] (2D) or [iz, iy, ix] (3D): count, density, velocity_x, velocity_y, temperature
 (T per degree of freedom, eq 1.3), kinetic_xx/xy/yy, pressure_kinetic, vorticity,
 heat_flux_kinetic_x/y (and the z components in 3D), the names of fields.h5.
+
+Inputs are checked before anything is copied: arrays of real numbers (TypeError otherwise), finite
+velocities, positive masses, positions with 0 ≤ x ≤ L per axis, box lengths in [1e-30, 1e30]
+within a factor 1e9 of one another, cells integers in [1, 16384], a finite U and Δ in [0, L_x]
+(ValueError, naming the first bad entry); a grid or copy larger than the available memory raises
+MemoryError.
 )doc");
   m.def("spectra", &power_spectra, py::arg("positions"), py::arg("velocities"), py::arg("box"),
         py::arg("masses") = py::none(), py::arg("shear_velocity") = 0.0, py::arg("shear_offset") = 0.0,
@@ -158,6 +228,10 @@ ring centres k, with the number of modes per ring, the ideal-gas levels ⟨R⟩ 
 density mode (its |k|, angle, length 2π/|k| and significance) and the mode maps.  max_mode M
 (default 64 in 2D, 32 in 3D) bounds the modes |l|, |m| (, |n|) ≤ M; method "fast" (gridded FFT,
 ~1e-7 relative) or "exact" (direct sums).
+
+The arrays, box, U and Δ are checked as by cell_fields; dk must be a finite wavenumber > 0 that
+makes at most 2^32 annuli.  FFT grids, mode maps and copies larger than the available memory
+raise MemoryError before they are allocated.
 )doc");
 }
 

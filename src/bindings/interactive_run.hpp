@@ -32,10 +32,17 @@ RunConfig parse_run_config(const std::string& toml_text, const std::vector<std::
 RunConfig load_run_config(const std::string& path, const std::vector<std::string>& overrides);
 
 // Limits of one call of run(): absolute collisions per particle and time since
-// production started (absent: the configuration's run.until_*).
+// production started.  Those given replace the configuration's run.until_*, which
+// apply when neither is given.
 struct RunLimits {
   std::optional<double> collisions_per_particle;
   std::optional<double> time;
+};
+
+// Where one call of run() stops: total collisions and time (kNoLimit, ∞: none).
+struct RunTargets {
+  std::int64_t collisions = driver::kNoLimit;
+  double time = driver::kInf;
 };
 
 template <int D>
@@ -48,9 +55,14 @@ class InteractiveRun {
   // `keep_going` is asked between chunks of max(1000, N/4) collisions; false
   // stops with kInterrupted.
   StopReason equilibrate(const std::function<bool()>& keep_going);
-  // Production up to `limits`; the time series gains a last row at the stop (as
-  // a run's end).
-  StopReason run(const RunLimits& limits, const std::function<bool()>& keep_going);
+  // The targets of `limits`.  Throws std::invalid_argument, naming the argument,
+  // its allowed range and the present c or t, for a limit that is not a finite
+  // number, lies beyond the engine's counters (c·N ≤ 2^62, kMaxCollisions) or is
+  // reached already (a run that would do nothing).
+  RunTargets targets(const RunLimits& limits) const;
+  // Production up to `targets`; the time series gains a last row at the stop
+  // (as a run's end).
+  StopReason run(const RunTargets& targets, const std::function<bool()>& keep_going);
 
   const Simulation<D>& engine() const { return run_.engine(); }
   const RunConfig& config() const { return config_; }

@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings/bindings.hpp"
+#include "bindings/input_checks.hpp"
 #include "bindings/interactive_run.hpp"
 #include "granule/version.hpp"
 
@@ -15,6 +16,13 @@ PYBIND11_MODULE(_granule, m) {
   // ValueError, so that code catching bad values catches bad configurations
   // too.
   py::register_exception<granule::bindings::ConfigError>(m, "ConfigError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const granule::bindings::MemoryRefused& refused) {
+      PyErr_SetString(PyExc_MemoryError, refused.what());
+    }
+  });
   granule::bindings::bind_simulation(m);
   granule::bindings::bind_analysis(m);
   granule::bindings::bind_theory(m);

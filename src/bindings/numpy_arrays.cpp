@@ -2,7 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "bindings/input_checks.hpp"
+#include "io/input_ranges.hpp"
 
 namespace granule::bindings {
 
@@ -10,9 +16,36 @@ namespace py = pybind11;
 
 namespace {
 
+// The largest ratio of two box sides: the engine's largest L/σ (io/input_ranges.hpp).  It keeps
+// the default field grid (about 20 particles a cell, cells as square as the box allows) to
+// counts of cells an int holds.
+constexpr double kMaxBoxAspect = kMaxBoxOverDiameter;
+
 Array finished(Array array) {
   py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return array;
+}
+
+// `value` as a NumPy array (a view where it is one) of `dimensions` axes holding real numbers.
+py::array real_array(const py::object& value, const char* name, int dimensions) {
+  const py::array array = py::module_::import("numpy").attr("asarray")(value);
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::type_error(fmt::format("{} must hold real numbers (a float or int dtype), not {}", name,
+                                     py::str(array.dtype()).cast<std::string>()));
+  }
+  if (array.ndim() != dimensions) {
+    throw py::value_error(fmt::format("{} must be a {}-D array, not {}-D", name, dimensions, array.ndim()));
+  }
+  return array;
+}
+
+// The values of a checked array as contiguous doubles (the copy is made here, after the caller's
+// memory check).
+Array doubles(const py::array& array) {
+  Array converted = Array::ensure(array);
+  if (!converted) throw py::type_error("an array could not be converted to float64");
+  return converted;
 }
 
 }  // namespace
@@ -34,34 +67,91 @@ Array read_only_vector(const std::vector<double>& values) {
   return finished(std::move(array));
 }
 
-ParticleState particle_state(const Array& positions, const Array& velocities, const py::object& masses) {
-  if (positions.ndim() != 2 || (positions.shape(1) != 2 && positions.shape(1) != 3)) {
-    throw std::invalid_argument("positions must be an N × 2 or N × 3 array");
+ConfigurationArrays configuration_arrays(const py::object& positions, const py::object& velocities,
+                                         const py::object& masses) {
+  ConfigurationArrays arrays;
+  arrays.positions = real_array(positions, "positions", 2);
+  if (arrays.positions.shape(1) != 2 && arrays.positions.shape(1) != 3) {
+    throw py::value_error(fmt::format("positions must be an N × 2 or N × 3 array, not N × {}", arrays.positions.shape(1)));
   }
-  if (velocities.ndim() != 2 || velocities.shape(0) != positions.shape(0) ||
-      velocities.shape(1) != positions.shape(1)) {
-    throw std::invalid_argument("velocities must have the shape of positions");
+  arrays.particles = static_cast<std::size_t>(arrays.positions.shape(0));
+  arrays.dimension = static_cast<int>(arrays.positions.shape(1));
+  arrays.velocities = real_array(velocities, "velocities", 2);
+  if (arrays.velocities.shape(0) != arrays.positions.shape(0) || arrays.velocities.shape(1) != arrays.positions.shape(1)) {
+    throw py::value_error(fmt::format("velocities must have the shape of positions, {} × {}, not {} × {}",
+                                      arrays.positions.shape(0), arrays.positions.shape(1), arrays.velocities.shape(0),
+                                      arrays.velocities.shape(1)));
   }
+  arrays.masses = masses;
+  if (!masses.is_none()) {
+    const py::array m = real_array(masses, "masses", 1);
+    if (static_cast<std::size_t>(m.shape(0)) != arrays.particles) {
+      throw py::value_error(fmt::format("masses must have N = {} entries, not {}", arrays.particles, m.shape(0)));
+    }
+    arrays.masses = m;
+  }
+  return arrays;
+}
+
+Box box_argument(const py::object& box, int dimension) {
+  const py::array lengths = real_array(box, "box", 1);
+  if (lengths.shape(0) != dimension) {
+    throw py::value_error(fmt::format("box must have one length per axis of positions ({}), not {}", dimension,
+                                      lengths.shape(0)));
+  }
+  const Array values = doubles(lengths);
+  const double* l = values.data();
+  for (int a = 0; a < dimension; ++a) {
+    if (!kLengthRange.contains(l[a])) {
+      throw py::value_error(fmt::format("box[{}] = {}: a box length must be in {}", a, l[a], kLengthRange.text()));
+    }
+  }
+  const auto [shortest, longest] = std::minmax_element(l, l + dimension);
+  if (*longest > kMaxBoxAspect * *shortest) {
+    throw py::value_error(fmt::format("box sides {} and {}: they must be within a factor {:g} of one another",
+                                      *shortest, *longest, kMaxBoxAspect));
+  }
+  return {l[0], l[1], dimension == 3 ? l[2] : 1.0};
+}
+
+ParticleState particle_state(const ConfigurationArrays& arrays, const Box& box) {
   ParticleState state;
-  state.dimension = static_cast<int>(positions.shape(1));
-  const auto n = static_cast<std::size_t>(positions.shape(0));
+  state.dimension = arrays.dimension;
+  const std::size_t n = arrays.particles;
   state.resize(n);
+  const Array positions = doubles(arrays.positions);
+  const Array velocities = doubles(arrays.velocities);
   const auto r = positions.unchecked<2>();
   const auto v = velocities.unchecked<2>();
+  const double lengths[3] = {box.length_x, box.length_y, box.length_z};
+  const char* axes = "xyz";
   std::vector<double>* position_columns[3] = {&state.x, &state.y, &state.z};
   std::vector<double>* velocity_columns[3] = {&state.vx, &state.vy, &state.vz};
   for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<py::ssize_t>(i);
     for (int a = 0; a < state.dimension; ++a) {
-      (*position_columns[a])[i] = r(static_cast<py::ssize_t>(i), a);
-      (*velocity_columns[a])[i] = v(static_cast<py::ssize_t>(i), a);
+      // [0, L] closed: np.mod(x, L) may round a small negative x up to L.
+      if (!(r(row, a) >= 0.0 && r(row, a) <= lengths[a])) {
+        throw py::value_error(fmt::format("positions[{}, {}] = {}: positions must be finite and inside the box, "
+                                          "0 ≤ {} ≤ {} (wrap them with numpy.mod(positions, box))",
+                                          i, a, r(row, a), axes[a], lengths[a]));
+      }
+      if (!std::isfinite(v(row, a))) {
+        throw py::value_error(fmt::format("velocities[{}, {}] = {}: velocities must be finite", i, a, v(row, a)));
+      }
+      (*position_columns[a])[i] = r(row, a);
+      (*velocity_columns[a])[i] = v(row, a);
     }
   }
-  if (!masses.is_none()) {
-    const auto m = masses.cast<Array>();
-    if (m.ndim() != 1 || static_cast<std::size_t>(m.shape(0)) != n) {
-      throw std::invalid_argument(fmt::format("masses must have N = {} entries", n));
+  if (!arrays.masses.is_none()) {
+    const Array masses = doubles(arrays.masses.cast<py::array>());
+    const double* m = masses.data();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(std::isfinite(m[i]) && m[i] > 0.0)) {
+        throw py::value_error(fmt::format("masses[{}] = {}: masses must be positive and finite", i, m[i]));
+      }
     }
-    state.mass.assign(m.data(), m.data() + n);
+    state.mass.assign(m, m + n);
   }
   return state;
 }

@@ -54,7 +54,7 @@ def test_config_errors_carry_the_command_lines_message(tmp_path, granule_cli, sm
 
 
 def test_a_value_toml_cannot_hold_is_refused_by_key(small_config):
-    with pytest.raises(granule.ConfigError, match="system.restitution"):
+    with pytest.raises(TypeError, match="system.restitution: a value of type object"):
         granule.Simulation({"system": {"restitution": object()}})
 
 
@@ -145,7 +145,9 @@ def test_ctrl_c_stops_a_run_cleanly_and_it_can_go_on():
         sys.exit(1)
     """)
     words = out.split()
-    assert words[0] == "interrupted" and 0 < float(words[1]) < 1e6 and float(words[2]) >= float(words[1]) + 0.1
+    assert words[0] == "interrupted" and 0 < float(words[1]) < 1e6
+    # c + 0.1 is reached to the nearest whole collision of the 20000 particles.
+    assert float(words[2]) == pytest.approx(float(words[1]) + 0.1, abs=0.5 / 20000)
 
 
 def test_ctrl_c_stops_a_run_directory_with_its_checkpoint(tmp_path, granule_cli):
