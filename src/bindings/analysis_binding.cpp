@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "analysis/cell_fields.hpp"
+#include "driver/run_beginnings.hpp"
 #include "bindings/bindings.hpp"
 #include "bindings/input_checks.hpp"
 #include "bindings/numpy_arrays.hpp"
@@ -105,7 +106,7 @@ py::dict cell_fields(const py::object& positions, const py::object& velocities, 
   const Box lengths = box_argument(box, arrays.dimension);
   const ShearFrame frame = shear_frame(lengths, shear_velocity, shear_offset);
   const FieldGrid grid = field_grid(cells, lengths, arrays.dimension, arrays.particles);
-  require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle +
+  driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle +
                      static_cast<double>(grid.cells()) * kFieldBytesPerCell,
                  fmt::format("cell_fields of N = {} on {} cells", arrays.particles, grid.cells()));
   const ParticleState state = particle_state(arrays, lengths);
@@ -167,7 +168,7 @@ py::dict power_spectra(const py::object& positions, const py::object& velocities
   const double grid_points = options.method == spectra::SpectralMethod::fast
                                  ? std::pow(static_cast<double>(spectra::fft_grid_size(options.max_mode, options.gridding)), d)
                                  : 0.0;
-  require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle + grid_points * (d == 3 ? 32.0 : 64.0) +
+  driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle + grid_points * (d == 3 ? 32.0 : 64.0) +
                      modes * kSpectraBytesPerMode + annuli * kAnnulusBytes,
                  fmt::format("spectra of N = {} with max_mode = {}", arrays.particles, options.max_mode));
   const ParticleState state = particle_state(arrays, lengths);

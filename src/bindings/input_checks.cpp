@@ -2,26 +2,14 @@
 
 #include <fmt/format.h>
 
-#include "driver/run_directory.hpp"
+#include "driver/run_beginnings.hpp"
 #include "driver/run_start.hpp"
 
 namespace granule::bindings {
 
 namespace py = pybind11;
 
-void require_memory(double needed_bytes, const std::string& what) {
-  const double available = driver::available_memory_bytes();
-  if (available > 0.0 && !(needed_bytes <= available)) {
-    constexpr double kGiB = 1 << 30;
-    throw MemoryRefused(fmt::format("{} needs about {:.3g} GiB of memory, but {:.3g} GiB are available", what,
-                                    needed_bytes / kGiB, available / kGiB));
-  }
-}
-
-void require_memory_for_run(const RunConfig& config) {
-  require_memory(driver::estimated_run_bytes(config, driver::run_cell_grid(config)),
-                 fmt::format("a run of N = {}", config.system.particles));
-}
+void require_memory_for_run(const RunConfig& config) { driver::check_run_memory(config, driver::run_cell_grid(config)); }
 
 std::string type_name(const py::handle& value) {
   return py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();

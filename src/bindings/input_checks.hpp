@@ -12,17 +12,9 @@
 
 namespace granule::bindings {
 
-// Raised in Python as MemoryError (module.cpp registers the translation).
-struct MemoryRefused : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Throws MemoryRefused, with the estimate and what is available, when `needed_bytes` exceed the
-// available memory (driver::available_memory_bytes; nothing is refused where it cannot be read).
-// `what` names the work: "a run of N = 1000".
-void require_memory(double needed_bytes, const std::string& what);
-
-// The estimate `granule run` makes of a run's peak memory (driver::estimated_run_bytes).
+// The refusal `granule run` makes of a run larger than the available memory
+// (driver::check_run_memory), raised in Python as MemoryError (module.cpp registers the
+// translation of driver::NotEnoughMemory); driver::require_memory refuses other work.
 void require_memory_for_run(const RunConfig& config);
 
 // The name of a value's type, for messages ("int", "ndarray").

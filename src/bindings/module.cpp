@@ -5,6 +5,7 @@
 #include "bindings/bindings.hpp"
 #include "bindings/input_checks.hpp"
 #include "bindings/interactive_run.hpp"
+#include "driver/run_beginnings.hpp"
 #include "granule/version.hpp"
 
 PYBIND11_MODULE(_granule, m) {
@@ -19,7 +20,7 @@ PYBIND11_MODULE(_granule, m) {
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
-    } catch (const granule::bindings::MemoryRefused& refused) {
+    } catch (const granule::driver::NotEnoughMemory& refused) {
       PyErr_SetString(PyExc_MemoryError, refused.what());
     }
   });

@@ -45,13 +45,17 @@ RunConfig run_configuration(const std::string& config_path, const std::string& c
   return *parsed.config;
 }
 
-void check_run_memory(const RunConfig& config, const CellGrid& grid) {
-  const double needed = estimated_run_bytes(config, grid);
+void require_memory(double needed_bytes, const std::string& what) {
   const double available = available_memory_bytes();
-  if (available > 0.0 && needed > available) {
-    throw NotEnoughMemory(fmt::format("a run of N = {} needs about {:.3g} GiB of memory, but {:.3g} GiB are available",
-                                      config.system.particles, needed / (1 << 30), available / (1 << 30)));
+  if (available > 0.0 && !(needed_bytes <= available)) {
+    constexpr double kGiB = 1 << 30;
+    throw NotEnoughMemory(fmt::format("{} needs about {:.3g} GiB of memory, but {:.3g} GiB are available", what,
+                                      needed_bytes / kGiB, available / kGiB));
   }
+}
+
+void check_run_memory(const RunConfig& config, const CellGrid& grid) {
+  require_memory(estimated_run_bytes(config, grid), fmt::format("a run of N = {}", config.system.particles));
 }
 
 template <int D>

@@ -29,7 +29,11 @@ struct NotEnoughMemory : std::runtime_error {
 RunConfig run_configuration(const std::string& config_path, const std::string& continued, bool from_frame,
                             const std::vector<std::string>& overrides);
 
-// Throws NotEnoughMemory when the run would need more memory than is available.
+// Throws NotEnoughMemory, with the estimate and what is available, when `needed_bytes` exceed the
+// available memory (available_memory_bytes; nothing is refused where it cannot be read).  `what`
+// names the work: "a run of N = 1000".
+void require_memory(double needed_bytes, const std::string& what);
+// The same for the estimate of a run's peak memory (estimated_run_bytes).
 void check_run_memory(const RunConfig& config, const CellGrid& grid);
 
 // A new run in `out` (created; an earlier run's files replaced only when `force`), its resolved

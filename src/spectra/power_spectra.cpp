@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace granule::spectra {
 
@@ -51,7 +53,12 @@ AnnulusSpectrum annulus_sums(const PowerMaps& maps, double dk, double max_radius
   AnnulusSpectrum out;
   out.dk = dk;
   const double radius = std::min(max_radius, maps.lattice.complete_radius(maps.modes.max_mode));
-  const auto bins = static_cast<std::size_t>(std::max(0.0, std::floor(radius / dk - 0.5)));  // b = 1 … bins
+  const double count = std::max(0.0, std::floor(radius / dk - 0.5));  // b = 1 … bins
+  if (!(count <= 4294967296.0)) {  // a width too small for any table (and for the cast below)
+    throw std::length_error("an annulus width dk = " + std::to_string(dk) + " makes more than 2^32 annuli up to k = " +
+                            std::to_string(radius) + ": choose a wider dk");
+  }
+  const auto bins = static_cast<std::size_t>(count);
   out.k.resize(bins);
   for (std::size_t b = 0; b < bins; ++b) out.k[b] = static_cast<double>(b + 1) * dk;
   out.modes.assign(bins, 0);

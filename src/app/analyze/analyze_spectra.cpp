@@ -11,6 +11,7 @@
 #include <memory>
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,9 @@ int analyze_spectra(const SpectraOptions& options) {
       fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
     }
     analysis.publish();
+  } catch (const std::length_error& refused) {  // an annulus width too small for the lattice
+    fmt::print(stderr, "granule analyze spectra: error: --dk: {}\n", refused.what());
+    return kExitBadInput;
   } catch (const InputError& refused) {  // a damaged or malformed input: nothing written
     fmt::print(stderr, "granule analyze spectra: error: {}\n", refused.what());
     return kExitBadInput;
