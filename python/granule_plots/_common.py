@@ -100,12 +100,13 @@ def save(fig, out, dpi, data=None, data_path=None):
 
 def run(main):
     """Runs a script's main.  What h5py, NumPy or the JSON reader raise while a damaged, truncated
-    or foreign input is read (a missing dataset or key, a wrong shape, a failed checksum, an array
-    too large to allocate) is bad input: exit 2 with the reason, nothing written."""
+    or foreign input is read (a missing dataset or key, a wrong shape, an attribute of several
+    values where one is expected, a value no number can be made of, a failed checksum, an array too
+    large to allocate) is bad input: exit 2 with the reason, nothing written."""
     kind = Path(sys.argv[0]).stem
     try:
         sys.exit(main())
-    except (OSError, KeyError, ValueError, IndexError, MemoryError) as error:
+    except (OSError, KeyError, ValueError, IndexError, TypeError, AttributeError, ArithmeticError, MemoryError) as error:
         source = sys.argv[1] if len(sys.argv) > 1 else "the input"
         fail(kind, f"cannot read {source}: {type(error).__name__}: {error}")
 

@@ -7,8 +7,8 @@ flipped, bytes zeroed, files cut short — and given to each reader:
   (snapshots.h5, fields.h5, and checkpoint.h5 on resume, half of those edits with their digests
   recomputed as a hostile user would), each read cleanly or refused, never a crash, a hang or
   another error;
-- through the command line: a sample of the mutants (snapshots.h5, checkpoint.h5, and fields.h5
-  and collisions.h5, which figure scripts read with h5py) given to `granule analyze`, `plot` and
+- through the command line: a sample of the mutants (snapshots.h5, checkpoint.h5, and fields.h5,
+  collisions.h5 and spectra.h5, which figure scripts read with h5py) given to `granule analyze`, `plot` and
   `run --resume`, each exiting with 0 or 2 within a time limit and writing nothing outside its
   output.
 
@@ -46,6 +46,8 @@ for name, settings in RUNS.items():
     result = granule("run", "--out", out, *settings)
     check(result.returncode == 0, f"seed run {name}: exit {result.returncode}: {result.stderr[-500:]}")
     if result.returncode == 0:
+        spectra = granule("analyze", "spectra", out / "snapshots.h5", "--out", out / "spectra.h5")
+        check(spectra.returncode == 0, f"spectra of {name}: {spectra.stderr[-500:]}")
         originals[name] = out
 
 # In one process: every reader, the mutant count split over the seed runs.
@@ -83,11 +85,12 @@ def commands(run, mutant_dir, out):
             ["plot", "export", mutant_dir / "fields.h5", "--format", "vtk", "--out", out / "fields.vti"],
         ],
         "collisions.h5": [["plot", "collisions", mutant_dir / "collisions.h5", "--out", out / "collisions.png"]],
+        "spectra.h5": [["plot", "spectra", mutant_dir / "spectra.h5", "--out", out / "spectra.png"]],
     }
 
 
 for name, out in originals.items():
-    for target in ("snapshots.h5", "checkpoint.h5", "fields.h5", "collisions.h5"):
+    for target in ("snapshots.h5", "checkpoint.h5", "fields.h5", "collisions.h5", "spectra.h5"):
         # A figure takes seconds: fewer mutants for the files only figures read.
         for index in range(CLI_MUTANTS if target in ("snapshots.h5", "checkpoint.h5") else min(CLI_MUTANTS, 4)):
             mutant_dir = WORK / f"cli_{name}" / "run"
