@@ -4,6 +4,7 @@
 
 #include "observers/collision_statistics_fits.hpp"
 #include "io/atomic_file.hpp"
+#include "io/file_schema.hpp"
 #include "io/hdf5_util.hpp"
 #include "theory/hard_spheres.hpp"
 
@@ -167,6 +168,86 @@ std::string paths_csv(const FreePathStatistics<D>& paths) {
 }
 
 }  // namespace
+
+namespace {
+
+using h5::Values;
+
+// The summaries of one set of impact parameters (the total, a density window) in group `g`.
+void describe_impact_summary(h5::FileSchema& schema, const std::string& g) {
+  for (const char* name : {"counts", "density", "cumulative_minus_uniform"}) {
+    schema.datasets.push_back({g + "/" + name, "B", Values::kNumbers});
+  }
+  schema.attributes.push_back({g, "samples", Values::kFinite});
+  schema.attributes.push_back({g, "ks_uniform", Values::kNumbers});
+}
+
+// The summaries of one set of free paths (the total, a density or speed window) in group `g`.
+void describe_path_summary(h5::FileSchema& schema, const std::string& g) {
+  for (const char* name : {"counts", "cumulative"}) schema.datasets.push_back({g + "/" + name, "L,A", Values::kNumbers});
+  for (const char* name : {"magnitude_density", "matched_density", "exponential_density", "length_cumulative"}) {
+    schema.datasets.push_back({g + "/" + name, "L", Values::kNumbers});
+  }
+  for (const char* name : {"overflow", "angular_cumulative", "angular_fit"}) {
+    schema.datasets.push_back({g + "/" + name, "A", Values::kNumbers});
+  }
+  for (const char* name : {"paths", "mean_length", "mean_speed", "mean_length_squared", "alpha0", "alpha0_rms", "lbar",
+                           "lbar_rms", "l0_matched", "lambda_exponential", "ks_matched", "ks_exponential"}) {
+    schema.attributes.push_back({g, name, Values::kNumbers});
+  }
+  schema.attributes.push_back({g, "ks_isotropic", Values::kNumbers, 1, false});
+}
+
+void describe_window_bounds(h5::FileSchema& schema, const std::string& g, const std::string& quantity) {
+  for (const char* end : {"_low", "_high"}) schema.attributes.push_back({g, quantity + end, Values::kFinite});
+}
+
+}  // namespace
+
+const h5::FileSchema& collision_statistics_schema() {
+  static const h5::FileSchema schema = [] {
+    h5::FileSchema s{kFormat, kFormatVersion, kFormatVersion, {}, {}, {}};
+    s.attributes.push_back({".", "boundary", Values::kText});
+    s.attributes.push_back({".", "particles", Values::kIntegers});
+    for (const char* name : {"diameter", "restitution", "shear_velocity", "length_x", "length_y", "from_t", "from_c", "to_t", "to_c"}) {
+      s.attributes.push_back({".", name, Values::kFinite});
+    }
+    for (const char* name : {"density_cells_nx", "density_cells_ny"}) s.attributes.push_back({".", name, Values::kIntegers});
+    s.attributes.push_back({".", "dimension", Values::kIntegers, 1, false});
+    s.attributes.push_back({".", "length_z", Values::kFinite, 1, false});
+    s.attributes.push_back({".", "density_cells_nz", Values::kIntegers, 1, false});
+
+    // Either statistics may be switched off; each present has its total.
+    s.groups = {"impact_parameters/total", "impact_parameters/windows", "free_paths/total"};
+    // Impact parameters: B bins, W windows of collisions.
+    s.datasets.push_back({"impact_parameters/bin_edges", "B+1"});
+    s.attributes.push_back({"impact_parameters", "window_collisions", Values::kIntegers});
+    s.attributes.push_back({"impact_parameters", "variable", Values::kText, 1, false});
+    describe_impact_summary(s, "impact_parameters/total");
+    describe_impact_summary(s, "impact_parameters/density_window_*");
+    describe_window_bounds(s, "impact_parameters/density_window_*", "density");
+    for (const char* name : {"t_start", "t_end", "collisions"}) {
+      s.datasets.push_back({std::string("impact_parameters/windows/") + name, "W", Values::kFinite});
+    }
+    s.datasets.push_back({"impact_parameters/windows/counts", "W,B", Values::kFinite});
+
+    // Free paths: L length bins, A angle bins.
+    s.datasets.push_back({"free_paths/length_edges", "L+1"});
+    s.datasets.push_back({"free_paths/angle_edges", "A+1"});
+    for (const char* name : {"initial_max_length", "dropped_fraction"}) s.attributes.push_back({"free_paths", name, Values::kFinite});
+    s.attributes.push_back({"free_paths", "angle_variable", Values::kText, 1, false});
+    for (const char* name : {"boltzmann_mean_free_path", "enskog_mean_free_path"}) {
+      s.attributes.push_back({"free_paths", name, Values::kFinite, 1, false});
+    }
+    describe_path_summary(s, "free_paths/total");
+    describe_path_summary(s, "free_paths/density_window_*");
+    describe_window_bounds(s, "free_paths/density_window_*", "density");
+    describe_path_summary(s, "free_paths/speed_window_*");
+    describe_window_bounds(s, "free_paths/speed_window_*", "speed");
+    return s;
+  }();
+  return schema;
+}
 
 ReferenceMeanFreePaths sphere_mean_free_paths(const SystemParams& s) {
   const double volume = s.length_x * s.length_y * s.length_z;

@@ -11,6 +11,7 @@
 #include "observers/free_paths.hpp"
 #include "observers/impact_parameters.hpp"
 #include "engine/system_params.hpp"
+#include "io/file_schema.hpp"
 
 namespace granule {
 
@@ -35,5 +36,8 @@ struct ReferenceMeanFreePaths {
   double boltzmann = 0.0, enskog = 0.0;
 };
 ReferenceMeanFreePaths sphere_mean_free_paths(const SystemParams& system);
+
+// What collisions.h5 holds (io/file_schema.hpp), checked before a figure script reads it.
+const h5::FileSchema& collision_statistics_schema();
 
 }  // namespace granule

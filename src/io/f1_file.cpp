@@ -9,6 +9,7 @@
 
 #include "granule/version.hpp"
 #include "io/atomic_file.hpp"
+#include "io/file_schema.hpp"
 #include "io/hdf5_util.hpp"
 
 namespace granule {
@@ -232,6 +233,63 @@ void write_hdf5(const std::string& path, const F1RunDescription& run, const std:
 std::string csv_number(double value) { return std::isnan(value) ? std::string() : fmt::format("{:.10g}", value); }
 
 }  // namespace
+
+const h5::FileSchema& f1_schema() {
+  using h5::Values;
+  static const h5::FileSchema schema = [] {
+    h5::FileSchema s{kFormat, kFormatVersion, kFormatVersion, {"windows"}, {}, {}};
+    for (const char* name : {"source", "boundary"}) s.attributes.push_back({".", name, Values::kText});
+    for (const char* name : {"particles", "from_frame", "frames_used", "subtract_shear_profile", "speed_bins", "angle_bins",
+                             "bootstrap", "bootstrap_seed", "min_samples"}) {
+      s.attributes.push_back({".", name, Values::kIntegers});
+    }
+    for (const char* name : {"area_fraction", "restitution", "shear_velocity", "fit_quantile"}) {
+      s.attributes.push_back({".", name, Values::kFinite});
+    }
+    s.attributes.push_back({".", "box", Values::kFinite, 2});
+    s.attributes.push_back({".", "cells", Values::kIntegers, 2});
+
+    // Each window: v speeds, t angle bins, r bootstrap replicates, p profile points.
+    const std::string w = "windows/*";
+    for (const char* name : {"density_center", "density_half_width", "temperature_center", "temperature_half_width", "density",
+                             "temperature", "cell_temperature", "speed_scale", "speed_max", "fit_speed_max", "profile_angle",
+                             "profile_speed"}) {
+      s.attributes.push_back({w, name, Values::kFinite});
+    }
+    for (const char* name : {"samples", "snapshots", "twice_fit_skipped_points", "within_thesis_tolerance",
+                             "bootstrap_replicates", "bootstrap_converged_replicates"}) {
+      s.attributes.push_back({w, name, Values::kIntegers});
+    }
+    for (const char* name : {"twice_fit_max_relative_deviation", "max_deviation_small_speed", "max_deviation_large_speed",
+                             "ratio_b1_squared_over_b2", "ratio_error", "fit_beta"}) {
+      s.attributes.push_back({w, name, Values::kNumbers});
+    }
+    for (const char* fit : {"speed_fit", "angular_fit", "series_fit"}) {
+      const std::string prefix(fit);
+      s.attributes.push_back({w, prefix + "_converged", Values::kIntegers});
+      s.attributes.push_back({w, prefix + "_evaluations", Values::kIntegers});
+      s.attributes.push_back({w, prefix + "_residual_rms", Values::kNumbers});
+      s.attributes.push_back({w, prefix + "_status", Values::kText});
+    }
+    const std::vector<std::pair<const char*, const char*>> axes{
+        {"speed_edges", "v"}, {"angle_edges", "t+1"}, {"theta", "t"}, {"profile_speeds", "p"}, {"profile_angles", "p"}};
+    for (const auto& [name, shape] : axes) s.datasets.push_back({w + "/" + name, shape});
+    const std::vector<std::pair<const char*, const char*>> curves{
+        {"h", "v,t+1"}, {"h_fit", "v,t+1"}, {"psi", "v,t"}, {"psi_fit", "v,t"}, {"phi", "v"}, {"phi_fit", "v"}, {"J", "v"},
+        {"J_fit", "v"}, {"b", "t,3"}, {"b_series", "t,3"}, {"twice_fit_rms", "t"}, {"table", "7,4"}, {"table_error", "7,4"},
+        {"stress_direct", "3"}, {"stress_once", "3"}, {"stress_twice", "3"}, {"stress_trace_error", "3"}, {"normalisation", "2"},
+        {"jenkins_richman", "4"}, {"fit_a", "3"}, {"fit_alpha", "4"}, {"fit_d", "4,5"}, {"f_once_vs_speed", "p"},
+        {"f_twice_vs_speed", "p"}, {"f_jr_vs_speed", "p"}, {"f_once_vs_angle", "p"}, {"f_twice_vs_angle", "p"},
+        {"f_jr_vs_angle", "p"}};
+    for (const auto& [name, shape] : curves) s.datasets.push_back({w + "/" + name, shape, Values::kNumbers});
+    // Only when the window was bootstrapped.
+    const std::vector<std::pair<const char*, const char*>> replicates{
+        {"bootstrap_table", "r,7,4"}, {"bootstrap_traces", "r,3"}, {"bootstrap_ratio", "r"}};
+    for (const auto& [name, shape] : replicates) s.datasets.push_back({w + "/" + name, shape, Values::kNumbers, false});
+    return s;
+  }();
+  return schema;
+}
 
 std::vector<std::string> write_f1_outputs(const std::string& out, const F1RunDescription& run,
                                           const std::vector<WindowResult>& windows, const std::string& thesis_comparison) {

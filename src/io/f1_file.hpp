@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "distribution/f1_analysis.hpp"
+#include "io/file_schema.hpp"
 #include "io/snapshot_file.hpp"
 
 namespace granule {
@@ -22,6 +23,9 @@ struct F1RunDescription {
   double profile_speed = 0.0;   // v of the f(θ) profiles (Fig 5.11); 0: √(2T) of each window
   distribution::F1Options options;
 };
+
+// What f1.h5 holds (io/file_schema.hpp), checked before a figure script reads it.
+const h5::FileSchema& f1_schema();
 
 // Writes `out` (HDF5) and the CSV tables beside it (<stem>_table.csv, _windows.csv, _speed.csv,
 // _cumulative.csv, _angular.csv, _profiles.csv), each atomically, and <stem>_thesis.csv with

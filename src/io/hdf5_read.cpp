@@ -33,13 +33,6 @@ Handle read_owned(hid_t id, Handle::Closer closer, hid_t location, const std::st
   return Handle(id, closer);
 }
 
-std::string shape_text(const std::vector<hsize_t>& dims) {
-  if (dims.empty()) return "a scalar";
-  std::string text = "(";
-  for (std::size_t k = 0; k < dims.size(); ++k) text += (k ? ", " : "") + std::to_string(dims[k]);
-  return text + (dims.size() == 1 ? ",)" : ")");
-}
-
 // The number of elements of a shape, saturating far above anything a file can store.
 hsize_t elements(const std::vector<hsize_t>& dims) {
   constexpr hsize_t kHuge = hsize_t{1} << 62;
@@ -107,6 +100,13 @@ void read_checked_frame(hid_t file, const char* name, hid_t type, void* data, hs
 }
 
 }  // namespace
+
+std::string shape_text(const std::vector<hsize_t>& dims) {
+  if (dims.empty()) return "a scalar";
+  std::string text = "(";
+  for (std::size_t k = 0; k < dims.size(); ++k) text += (k ? ", " : "") + std::to_string(dims[k]);
+  return text + (dims.size() == 1 ? ",)" : ")");
+}
 
 void require_stored(hid_t dataset, hsize_t count, hid_t location, const std::string& object) {
   if (count == 0) return;
@@ -208,23 +208,41 @@ std::vector<double> read_frame_values(hid_t file, const char* name, hsize_t fram
   return values;
 }
 
-std::vector<double> read_vector(hid_t location, const char* name, hsize_t length) {
+std::vector<double> read_values(hid_t location, const char* name) {
   const std::string object = dataset_text(name);
   const std::vector<hsize_t> dims = dataset_shape(location, name);
-  if (dims.size() != 1 || (length != kAnyLength && dims[0] != length)) {
-    refuse(location, object + " has shape " + shape_text(dims) + "; expected " +
-                         (length == kAnyLength ? std::string("one dimension") : shape_text({length})));
-  }
   const Handle dataset = read_owned(H5Dopen2(location, name, H5P_DEFAULT), H5Dclose, location, "open " + object);
   const Handle stored = read_owned(H5Dget_type(dataset.get()), H5Tclose, location, "read the type of " + object);
   require_numeric(stored.get(), H5T_NATIVE_DOUBLE, location, object);
-  require_stored(dataset.get(), dims[0], location, object);
-  std::vector<double> values(static_cast<std::size_t>(dims[0]));
+  require_stored(dataset.get(), elements(dims), location, object);
+  std::vector<double> values(static_cast<std::size_t>(elements(dims)));
   if (!values.empty()) {
     check_read(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), location,
                "read " + object);
   }
   return values;
+}
+
+std::vector<double> read_vector(hid_t location, const char* name, hsize_t length) {
+  const std::vector<hsize_t> dims = dataset_shape(location, name);
+  if (dims.size() != 1 || (length != kAnyLength && dims[0] != length)) {
+    refuse(location, dataset_text(name) + " has shape " + shape_text(dims) + "; expected " +
+                         (length == kAnyLength ? std::string("one dimension") : shape_text({length})));
+  }
+  return read_values(location, name);
+}
+
+void require_whole(hid_t location, const char* name) {
+  const std::vector<hsize_t> dims = dataset_shape(location, name);
+  const Handle dataset = read_owned(H5Dopen2(location, name, H5P_DEFAULT), H5Dclose, location, "open " + dataset_text(name));
+  require_stored(dataset.get(), elements(dims), location, dataset_text(name));
+}
+
+bool stored_as_integers(hid_t location, const char* name) {
+  const std::string object = dataset_text(name);
+  const Handle dataset = read_owned(H5Dopen2(location, name, H5P_DEFAULT), H5Dclose, location, "open " + object);
+  const Handle stored = read_owned(H5Dget_type(dataset.get()), H5Tclose, location, "read the type of " + object);
+  return H5Tget_class(stored.get()) == H5T_INTEGER;
 }
 
 std::int64_t complete_frames(hid_t file) {

@@ -128,6 +128,8 @@ T read_attribute(hid_t object, const char* name, hid_t type) {
 // A string attribute, fixed-length or variable-length (as h5py writes them).
 std::string read_string_attribute(hid_t object, const char* name);
 
+// A shape as a refusal names it: "(3, 4)", "(5,)", "a scalar".
+std::string shape_text(const std::vector<hsize_t>& dims);
 // Refuses a dataset (`object` names it) whose `count` elements need more bytes than it stores:
 // sizes taken from the file are then bounded by the file's own size.
 void require_stored(hid_t dataset, hsize_t count, hid_t location, const std::string& object);
@@ -144,6 +146,12 @@ std::vector<double> read_frame_values(hid_t file, const char* name, hsize_t fram
 // A whole one-dimensional numeric dataset as doubles; `length`, when given, is the length it must have.
 constexpr hsize_t kAnyLength = ~hsize_t{0};
 std::vector<double> read_vector(hid_t location, const char* name, hsize_t length = kAnyLength);
+// A whole numeric dataset of any shape as doubles, row-major.
+std::vector<double> read_values(hid_t location, const char* name);
+// Refuses a dataset that stores fewer bytes than its whole shape claims.
+void require_whole(hid_t location, const char* name);
+// Whether a dataset stores integers (else floats, strings or another class).
+bool stored_as_integers(hid_t location, const char* name);
 
 // The frames every per-frame dataset holds: the shortest length, since a run stopped in the
 // middle of a frame leaves some datasets one frame longer than others (0 without any).  A dataset

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "granule/version.hpp"
+#include "io/file_schema.hpp"
 
 namespace granule {
 
@@ -17,6 +18,54 @@ constexpr const char* kFormat = "granule-spectra";
 constexpr int kFormatVersion = 2;  // 2: every run has S(k), its band and the significance of dominant modes
 
 }  // namespace
+
+const h5::FileSchema& spectra_file::spectra_schema(int dimension) {
+  using h5::Values;
+  const auto describe = [](int d) {
+    const bool depth = d == 3;
+    const std::string rings = depth ? "shell_" : "annulus_";
+    h5::FileSchema s{kFormat, kFormatVersion, kFormatVersion, {}, {}, {}};
+    for (const char* name : {"source", "method", "normalization", "boundary", "length_over_L0_compares", "null_hypothesis"}) {
+      s.attributes.push_back({".", name, Values::kText});
+    }
+    for (const char* name : {"max_mode", "subtract_shear_profile", "exclude_ky_axis_from_Px", "kernel_width", "fft_grid", "particles"}) {
+      s.attributes.push_back({".", name, Values::kIntegers});
+    }
+    for (const char* name : {"dk", "diameter", depth ? "packing_fraction" : "area_fraction", "restitution", "shear_velocity",
+                             "false_alarm"}) {
+      s.attributes.push_back({".", name, Values::kFinite});
+    }
+    s.attributes.push_back({".", "box", Values::kFinite, depth ? 3 : 2});
+    if (depth) s.attributes.push_back({".", "dimension", Values::kIntegers});
+    for (const char* name : {"mean_free_path", "L0"}) s.attributes.push_back({".", name, Values::kNumbers});
+
+    // F frames, maps of S × S modes (the plane k_z = 0 in 3D), K rings of |k|.
+    s.datasets.push_back({rings + "k", "K"});
+    s.datasets.push_back({"frame_index", "F", Values::kIntegers});
+    for (const char* name : {"collisions_per_particle", "time", "shear_offset", "tilt"}) s.datasets.push_back({name, "F"});
+    for (const char* name : {"kx", "ky"}) s.datasets.push_back({name, "F,S,S"});
+    for (const char* name : {"modes", "P_modes"}) s.datasets.push_back({rings + name, "F,K", Values::kIntegers});
+    for (const auto& [name, member] : kShellAverages) s.datasets.push_back({name, "F,K", Values::kNumbers});
+    for (const char* name : {"ideal_R", "ideal_P"}) s.datasets.push_back({name, "F", Values::kNumbers});
+    s.groups.push_back("dominant");
+    for (const FieldChoice& field : fields_of(d)) {
+      const std::string group = std::string("dominant/") + field.name;
+      s.groups.push_back(group);
+      s.datasets.push_back({field.name, "F,S,S", Values::kNumbers});
+      s.datasets.push_back({rings + field.name, "F,K", Values::kNumbers});
+      for (const char* column : {"l", "m", "n", "significant"}) {
+        if (depth || column[0] != 'n') s.datasets.push_back({group + "/" + column, "F", Values::kIntegers});
+      }
+      for (const auto& [column, member] : kDominantColumns) {
+        if (depth || std::string(column) != "kz") s.datasets.push_back({group + "/" + column, "F", Values::kNumbers});
+      }
+      s.datasets.push_back({group + "/length_over_L0", "F", Values::kNumbers});
+    }
+    return s;
+  };
+  static const h5::FileSchema planar = describe(2), spatial = describe(3);
+  return dimension == 3 ? spatial : planar;
+}
 
 std::string spectra_file::dominant_csv_header() {
   std::string csv = "frame,t,c,shear_offset,field,l,m,n";

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/file_schema.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/snapshot_file.hpp"
 #include "spectra/dominant_mode.hpp"
@@ -72,6 +73,10 @@ inline std::span<const FieldChoice> fields_of(int dimension) {
 inline constexpr std::pair<const char*, const std::vector<double> ShellStructureFactor::*> kShellAverages[] = {
     {"S_R", &ShellStructureFactor::density}, {"S_R_sd", &ShellStructureFactor::density_sd},
     {"S_P", &ShellStructureFactor::momentum}, {"S_P_sd", &ShellStructureFactor::momentum_sd}};
+
+// What spectra.h5 of a run of `dimension` holds (io/file_schema.hpp), checked before a figure
+// script reads it.
+const h5::FileSchema& spectra_schema(int dimension);
 
 // The dominant-mode CSV: its header line, and the line of one field's dominant mode in a frame.
 std::string dominant_csv_header();

@@ -7,9 +7,11 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "io/file_schema.hpp"
 #include "io/hdf5_util.hpp"
 
 extern char** environ;
@@ -29,6 +31,14 @@ fs::path plot_scripts_root() {
   const fs::path installed = fs::read_symlink("/proc/self/exe", ignored).parent_path().parent_path() / GRANULE_INSTALLED_PYTHON_DIR;
   if (fs::is_directory(installed / "granule_plots", ignored)) return installed;
   return GRANULE_SOURCE_PYTHON_DIR;
+}
+
+// The measurement file a figure script draws, if it draws one.
+std::optional<h5::Measurement> measurement_drawn_by(const std::string& script) {
+  if (script == "collisions") return h5::Measurement::kCollisionStatistics;
+  if (script == "spectra") return h5::Measurement::kSpectra;
+  if (script == "f1") return h5::Measurement::kF1;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -57,9 +67,15 @@ bool program_in_path(const std::string& name) {
 
 int run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
   // An HDF5 input is opened through Granule's reading layer first: a file whose structure crashes
-  // or hangs the HDF5 library is refused there (io/hdf5_util.hpp, open_file), never met by h5py.
+  // or hangs the HDF5 library is refused there (io/hdf5_util.hpp, open_file), never met by h5py,
+  // and a measurement file that does not hold what its schema says is refused before the script
+  // meets it half way through a figure (io/file_schema.hpp).
   if (!arguments.empty() && fs::path(arguments[0]).extension() == ".h5" && fs::is_regular_file(arguments[0])) {
-    h5::open_file(arguments[0]).close();
+    if (const std::optional<h5::Measurement> kind = measurement_drawn_by(script)) {
+      h5::check_measurement_file(arguments[0], *kind);
+    } else {
+      h5::open_file(arguments[0]).close();
+    }
   }
   const fs::path path = plot_scripts_root() / "granule_plots" / (script + ".py");
   if (!fs::exists(path)) throw std::runtime_error(fmt::format("the plot script {} is missing", path.string()));

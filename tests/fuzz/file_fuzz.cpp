@@ -9,7 +9,10 @@
 //   granule_file_fuzz reseal CHECKPOINT                         (digests recomputed after a hand edit)
 //
 // READER: snapshots (a snapshots.h5), fields (a fields.h5), resume (ORIGINAL is a run directory;
-// its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does).
+// its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does),
+// collisions, spectra, f1 (the measurement files figure scripts read: the schema check `granule
+// plot` makes before it starts the script; the indices of the mutants it accepts are written to
+// WORK_DIR/accepted.txt, for tests/fuzz/figure_fuzz.py to give to the script itself).
 // Prints "READER: N mutants, C clean, R refused, F failed" and exits 1 when F > 0.  The mutant
 // being read is described in WORK_DIR/current_mutant.txt (a crash leaves it there).
 #include <csignal>
@@ -18,6 +21,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <typeinfo>
 #include <unistd.h>
@@ -28,6 +32,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/config.hpp"
 #include "io/export_field_source.hpp"
+#include "io/file_schema.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
 #include "io/snapshot_file.hpp"
@@ -75,15 +80,21 @@ void resume(const RunConfig& config, const std::string& dir) {
   driver::RunSession<D> session(config, grid, dir, checkpoint);
 }
 
+const std::map<std::string, h5::Measurement> kMeasurementReaders{{"collisions", h5::Measurement::kCollisionStatistics},
+                                                                 {"spectra", h5::Measurement::kSpectra},
+                                                                 {"f1", h5::Measurement::kF1}};
+
 struct Tally {
   long clean = 0, refused = 0, failed = 0;
 };
 
-void try_one(const std::function<void()>& read, const std::string& what, Tally& tally) {
+// Whether the mutant was read cleanly.
+bool try_one(const std::function<void()>& read, const std::string& what, Tally& tally) {
   try {
     read();
     ++tally.clean;
     if (std::getenv("GRANULE_FUZZ_SHOW_CLEAN") != nullptr) std::printf("clean: %s\n", what.c_str());
+    return true;
   } catch (const InputError&) {
     ++tally.refused;
   } catch (const std::runtime_error& error) {
@@ -99,6 +110,7 @@ void try_one(const std::function<void()>& read, const std::string& what, Tally& 
     ++tally.failed;
     std::fprintf(stderr, "FAIL (%s) %s: %s\n", typeid(error).name(), what.c_str(), error.what());
   }
+  return false;
 }
 
 int run_fuzzer(const std::string& reader, const std::string& original, long mutants, std::uint64_t seed, const std::string& work) {
@@ -109,6 +121,8 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
   const std::string source = resuming ? original + "/checkpoint.h5" : original;
   const std::string mutant = resuming ? work + "/run/checkpoint.h5" : work + "/mutant.h5";
   fuzz::MutationOptions options;
+  const auto measurement = kMeasurementReaders.find(reader);
+  std::FILE* accepted = measurement != kMeasurementReaders.end() ? std::fopen((work + "/accepted.txt").c_str(), "w") : nullptr;
   for (long k = 0; k < mutants; ++k) {
     if (resuming) {
       fs::remove_all(work + "/run");
@@ -130,6 +144,10 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
       try_one([&] { read_snapshots(mutant); }, g_current, tally);
     } else if (reader == "fields") {
       try_one([&] { read_fields(mutant); }, g_current, tally);
+    } else if (measurement != kMeasurementReaders.end()) {
+      if (try_one([&] { h5::check_measurement_file(mutant, measurement->second); }, g_current, tally) && accepted) {
+        std::fprintf(accepted, "%ld\n", k);
+      }
     } else {
       try_one([&] {
         const ConfigResult parsed = load_config_file(work + "/run/config.toml", {});
@@ -143,6 +161,7 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
     }
     alarm(0);
   }
+  if (accepted) std::fclose(accepted);
   std::printf("%s: %ld mutants, %ld clean, %ld refused, %ld failed\n", reader.c_str(), mutants, tally.clean, tally.refused,
               tally.failed);
   return tally.failed == 0 ? 0 : 1;
@@ -160,13 +179,13 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc != 6) {
-    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume ORIGINAL MUTANTS SEED WORK_DIR\n"
+    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|collisions|spectra|f1 ORIGINAL MUTANTS SEED WORK_DIR\n"
                          "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n"
                          "       granule_file_fuzz reseal CHECKPOINT\n");
     return 2;
   }
   const std::string reader = argv[1];
-  if (reader != "snapshots" && reader != "fields" && reader != "resume") {
+  if (reader != "snapshots" && reader != "fields" && reader != "resume" && kMeasurementReaders.count(reader) == 0) {
     std::fprintf(stderr, "granule_file_fuzz: unknown reader %s\n", reader.c_str());
     return 2;
   }
