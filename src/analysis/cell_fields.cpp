@@ -75,6 +75,24 @@ void CellMoments::restore(const StateArchive& archive, const std::string& prefix
   }
 }
 
+double cell_moments_bytes(const FieldGrid& grid, bool masses, bool rough) {
+  FieldGrid one_cell;
+  one_cell.dimension = grid.dimension;
+  CellMoments probe(one_cell);
+  if (masses) probe.mass.resize(1);
+  if (rough) probe.inertia_sum.resize(1);
+  return static_cast<double>(sizeof(double) * moment_arrays(probe).size()) * static_cast<double>(grid.cells());
+}
+
+double cell_fields_bytes(const FieldGrid& grid, bool rough) {
+  CellFields probe;
+  probe.grid.dimension = grid.dimension;
+  probe.rough = rough;
+  double arrays = 0.0;
+  for_each_field(probe, [&arrays](const char*, const std::vector<double>&) { arrays += 1.0; });
+  return sizeof(double) * arrays * static_cast<double>(grid.cells());
+}
+
 void CellMoments::add(const StateBlocks& blocks, const ShearFrame& frame, bool subtract_shear_profile) {
   blocks.for_each([&](const ParticleState& state, std::size_t) { add_particles(state, frame, subtract_shear_profile); });
   ++configurations;

@@ -117,6 +117,13 @@ struct CellFields {
 CellFields fields_from_moments(const CellMoments& moments, const ShearFrame& frame, double shear_offset,
                                bool shear_profile_subtracted);
 
+// The bytes the arrays of one CellMoments and of one CellFields on `grid` take, with the Σm of
+// configurations with masses and the spin moments and fields of rough grains or without: one double
+// per array and cell, the arrays counted in the lists that hold them (the moments' checkpoint
+// list, for_each_field).  An analysis's memory check adds one per set it keeps.
+double cell_moments_bytes(const FieldGrid& grid, bool masses, bool rough);
+double cell_fields_bytes(const FieldGrid& grid, bool rough);
+
 }  // namespace granule
 
 namespace granule {

@@ -16,6 +16,7 @@
 #include "io/input_ranges.hpp"
 #include "spectra/dominant_mode.hpp"
 #include "spectra/power_spectra.hpp"
+#include "spectra/spectra_memory.hpp"
 #include "spectra/spectral_transforms.hpp"
 
 namespace granule::bindings {
@@ -26,16 +27,6 @@ namespace {
 
 // Coarse-graining cells per axis: those of `granule analyze fields --cells`.
 constexpr int kMaxFieldCells = 1 << 14;
-// The bytes a cell of the field grid takes: CellMoments' sums and CellFields' fields (about 20
-// each, analysis/cell_fields.hpp) and the NumPy copies of the fields, 8 bytes each, rounded up.
-constexpr double kFieldBytesPerCell = 64 * 8.0;
-// Annulus widths are refused below a width that makes more than 2^32 annuli (their count is a
-// size_t); fewer are held to the memory check, kAnnulusBytes each (the k, mode counts and sums).
-constexpr double kMaxAnnuli = 4294967296.0;
-constexpr double kAnnulusBytes = 8 * 8.0;
-// The bytes of each mode: its complex sums of mass and momentum, the power maps and their NumPy
-// copies.
-constexpr double kSpectraBytesPerMode = 192.0;
 
 // An integer argument in [low, high]: a Python int or anything with __index__ (NumPy integers),
 // not a float.  `name` names it in errors.
@@ -106,9 +97,12 @@ py::dict cell_fields(const py::object& positions, const py::object& velocities, 
   const Box lengths = box_argument(box, arrays.dimension);
   const ShearFrame frame = shear_frame(lengths, shear_velocity, shear_offset);
   const FieldGrid grid = field_grid(cells, lengths, arrays.dimension, arrays.particles);
+  // One set of moments, the fields computed from it and their NumPy copies (spins are not summed:
+  // no moment of inertia is given).
+  const bool with_masses = !arrays.masses.is_none();
   driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle +
-                     static_cast<double>(grid.cells()) * kFieldBytesPerCell,
-                 fmt::format("cell_fields of N = {} on {} cells", arrays.particles, grid.cells()));
+                             cell_moments_bytes(grid, with_masses, false) + 2.0 * cell_fields_bytes(grid, false),
+                         fmt::format("cell_fields of N = {} on {} cells", arrays.particles, grid.cells()));
   const ParticleState state = particle_state(arrays, lengths);
   CellMoments moments(grid);
   moments.add(state, frame, subtract_shear_profile);
@@ -157,20 +151,16 @@ py::dict power_spectra(const py::object& positions, const py::object& velocities
       dk ? checked(*dk, NumberRange{0.0, kUnbounded, true, true}, "dk")
          : spectra::default_annulus_width(spectra::lattice_for_frame(frame, 0.0, d, lengths.length_z));
   const double radius = lattice.complete_radius(options.max_mode);
-  const double annuli = std::floor(radius / width);
-  if (!(annuli <= kMaxAnnuli)) {
+  const double annuli = spectra::annulus_count(width, radius);
+  if (!(annuli <= spectra::kMaxAnnuli)) {
     throw py::value_error(fmt::format("dk = {}{}: more than 2^32 annuli up to k = {}: choose a wider dk", width,
                                       dk ? "" : " (the default, 2π/L_max)", radius));
   }
-  // The memory of the transforms (the FFT grids of the fast method: 2D a padded real grid of the
-  // fields and two complex planes, 3D one complex grid and its transform) and of the modes.
-  const double modes = std::pow(2.0 * options.max_mode + 1.0, d);
-  const double grid_points = options.method == spectra::SpectralMethod::fast
-                                 ? std::pow(static_cast<double>(spectra::fft_grid_size(options.max_mode, options.gridding)), d)
-                                 : 0.0;
-  driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle + grid_points * (d == 3 ? 32.0 : 64.0) +
-                     modes * kSpectraBytesPerMode + annuli * kAnnulusBytes,
-                 fmt::format("spectra of N = {} with max_mode = {}", arrays.particles, options.max_mode));
+  // The NumPy copies of the maps below are made once the transforms are freed, within the peak
+  // that spectra_bytes counts.
+  driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle +
+                             spectra::spectra_bytes(arrays.particles, d, options, annuli),
+                         fmt::format("spectra of N = {} with max_mode = {}", arrays.particles, options.max_mode));
   const ParticleState state = particle_state(arrays, lengths);
   const spectra::PowerMaps maps =
       spectra::power_maps(spectra::transform_fields(state, frame, lattice, options), exclude_ky_axis);

@@ -47,8 +47,8 @@ ConfigurationArrays configuration_arrays(const pybind11::object& positions, cons
 // factor 1e9 (its largest L/σ) of the others: ValueError otherwise.
 Box box_argument(const pybind11::object& box, int dimension);
 
-// The bytes an analysis holds per particle at the most (the copies below, the ParticleState, the
-// weighted points of the spectra), for the memory check made before copying.
+// The bytes an analysis holds per particle at the most (the copies below and the ParticleState;
+// the analyses count their own arrays), for the memory check made before copying.
 inline constexpr double kAnalysisBytesPerParticle = 256.0;
 
 // The configuration as a ParticleState for the analyses.  ValueError, naming the array and the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "driver/run_beginnings.hpp"
 #include "driver/run_directory.hpp"
 #include "driver/run_measurements.hpp"
 #include "driver/run_start.hpp"
@@ -26,6 +27,10 @@ ReplayOutcome replay(const RunConfig& config, const SnapshotRead& snapshot, doub
     outcome.error = choice.error;
     return outcome;
   }
+  // The measurements' grids are set by --set (fields.cells up to 16384²): counted with the engine.
+  require_memory(estimated_run_bytes(config, *choice.grid),
+                 fmt::format("a replay of N = {} with fields.cells = [{}, {}]", system.particles, config.fields.cells.first,
+                             config.fields.cells.second));
   Simulation<D> sim(system, *choice.grid, snapshot.frame.particles, snapshot.frame.clock);
   outcome.out = out_dir(sim.collisions_per_particle());
   std::filesystem::create_directories(outcome.out);

@@ -32,7 +32,8 @@ struct ReplayOutcome {
 
 // Continues `snapshot`'s frame with the measurements of `config` ([fields], [collisions]) for
 // `collisions_per_particle` more collisions per particle (or until no event or an inelastic
-// collapse), writing them and summary.json into `out_dir(c at the start)`, which it creates.
+// collapse), writing them and summary.json into `out_dir(c at the start)`, which it creates.  A
+// replay larger than the memory available throws NotEnoughMemory before anything is created.
 ReplayOutcome replay_with_measurements(const RunConfig& config, const SnapshotRead& snapshot,
                                        double collisions_per_particle,
                                        const std::function<std::string(double c_start)>& out_dir);

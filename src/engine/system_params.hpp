@@ -143,6 +143,12 @@ struct ParticleState {
   const std::vector<double>& velocity(int axis) const { return axis == 0 ? vx : (axis == 1 ? vy : vz); }
   double diameter_of(std::size_t i, double monodisperse) const { return diameter.empty() ? monodisperse : diameter[i]; }
   double mass_of(std::size_t i) const { return mass.empty() ? 1.0 : mass[i]; }
+  // The bytes its arrays hold: what another copy of it allocates.
+  std::size_t array_bytes() const {
+    std::size_t values = 0;
+    for (const std::vector<double>* column : {&x, &y, &z, &vx, &vy, &vz, &diameter, &mass, &wx, &wy, &wz}) values += column->size();
+    return values * sizeof(double);
+  }
 };
 
 // Everything besides positions and velocities that a synchronised engine needs to continue a

@@ -73,7 +73,9 @@ std::vector<std::vector<Complex>> fold_into_complex_grids(const std::vector<doub
                                                           int w) {
   const std::size_t stride = static_cast<std::size_t>(n + 2 * w);
   const std::size_t cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  std::vector<std::vector<Complex>> grids((fields + 1) / 2, std::vector<Complex>(cells));
+  // Each grid allocated in place: copies of a zeroed prototype would hold one grid more at the peak.
+  std::vector<std::vector<Complex>> grids((fields + 1) / 2);
+  for (std::vector<Complex>& grid : grids) grid.resize(cells);
   for (std::size_t py = 0; py < stride; ++py) {
     const int iy = ((static_cast<int>(py) - w) % n + n) % n;
     for (std::size_t px = 0; px < stride; ++px) {

@@ -53,8 +53,8 @@ AnnulusSpectrum annulus_sums(const PowerMaps& maps, double dk, double max_radius
   AnnulusSpectrum out;
   out.dk = dk;
   const double radius = std::min(max_radius, maps.lattice.complete_radius(maps.modes.max_mode));
-  const double count = std::max(0.0, std::floor(radius / dk - 0.5));  // b = 1 … bins
-  if (!(count <= 4294967296.0)) {  // a width too small for any table (and for the cast below)
+  const double count = annulus_count(dk, radius);
+  if (!(count <= kMaxAnnuli)) {  // a width too small for any table (and for the cast below)
     throw std::length_error("an annulus width dk = " + std::to_string(dk) + " makes more than 2^32 annuli up to k = " +
                             std::to_string(radius) + ": choose a wider dk");
   }
@@ -83,6 +83,8 @@ AnnulusSpectrum annulus_sums(const PowerMaps& maps, double dk, double max_radius
   }
   return out;
 }
+
+double annulus_count(double dk, double max_radius) { return std::max(0.0, std::floor(max_radius / dk - 0.5)); }
 
 double default_annulus_width(const ReciprocalLattice& lattice) {
   const double longest = std::max(lattice.length_x, lattice.length_y);

@@ -60,6 +60,13 @@ struct AnnulusSpectrum {
 
 AnnulusSpectrum annulus_sums(const PowerMaps& maps, double dk, double max_radius);
 
+// How many rings of width `dk` lie wholly inside `max_radius` (b = 1 … floor(max_radius/dk − ½)):
+// those annulus_sums reports, counted before anything is allocated for them.
+double annulus_count(double dk, double max_radius);
+// The most rings annulus_sums makes (their count is a size_t): a narrower dk throws
+// std::length_error before anything is allocated for them.
+inline constexpr double kMaxAnnuli = 4294967296.0;  // 2^32
+
 // Default Δk: the spacing 2π/max(L_x, L_y (, L_z)) of the lattice along its longest side.
 double default_annulus_width(const ReciprocalLattice& lattice);
 

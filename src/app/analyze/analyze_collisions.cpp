@@ -10,6 +10,7 @@
 #include "app/exit_codes.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "driver/measurement_replay.hpp"
+#include "driver/run_beginnings.hpp"
 #include "driver/run_directory.hpp"
 #include "driver/run_start.hpp"
 
@@ -40,10 +41,15 @@ int analyze_collisions(const CollisionsOptions& o) {
     return bad_collisions_input(refused.what());
   }
   const SnapshotRead& snapshot = start.snapshot;
-  const driver::ReplayOutcome replay =
-      driver::replay_with_measurements(start.config, snapshot, o.collisions_per_particle, [&](double c_start) {
-        return o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, c_start) : o.out;
-      });
+  driver::ReplayOutcome replay;
+  try {
+    replay = driver::replay_with_measurements(start.config, snapshot, o.collisions_per_particle, [&](double c_start) {
+      return o.out.empty() ? fmt::format("{}/replay_from_c{:g}", o.run_dir, c_start) : o.out;
+    });
+  } catch (const driver::NotEnoughMemory& refused) {  // the grids of --set fields.cells, say
+    fmt::print(stderr, "granule analyze collisions: error: {}\n", refused.what());
+    return kExitOutOfMemory;
+  }
   if (!replay.error.empty()) return bad_collisions_input(replay.error);
   fmt::print("continued {} from frame {} (c = {:.6g}) to c = {:.6g}: measurements in {}\n", o.run_dir, o.frame,
              snapshot.frame.collisions_per_particle, replay.collisions_per_particle, replay.out);

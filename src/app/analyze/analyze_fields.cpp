@@ -7,8 +7,10 @@
 #include <memory>
 #include <optional>
 
-#include "app/exit_codes.hpp"
+#include "analysis/cell_fields.hpp"
+#include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
+#include "app/exit_codes.hpp"
 #include "granule/version.hpp"
 #include "io/fields_from_snapshots.hpp"
 #include "io/frame_selection.hpp"
@@ -47,6 +49,19 @@ int analyze_fields(const FieldsOptions& o) {
   } catch (const InputError& error) {
     fmt::print(stderr, "granule analyze fields: error: {}\n", error.what());
     return kExitBadInput;
+  }
+  // io/fields_from_snapshots keeps a running and an instant set of moments and computes the fields
+  // of both for every frame it reads beside frame 0: refused before any of it is allocated.
+  const SystemParams& system = head.metadata.system;
+  const bool masses = !head.frame.particles.mass.empty();
+  const bool rough = system.roughness.rough && system.roughness.inertia_factor > 0.0;
+  const double needed =
+      frame_copy_bytes(head.frame) + 2.0 * (cell_moments_bytes(grid, masses, rough) + cell_fields_bytes(grid, rough));
+  const std::string cells = grid.dimension == 3 ? fmt::format("{},{},{}", grid.nx, grid.ny, grid.nz)
+                                                : fmt::format("{},{}", grid.nx, grid.ny);
+  const std::string what = o.cells.empty() ? fmt::format("the default grid of {} cells", cells) : fmt::format("--cells {}", cells);
+  if (const auto refused = refused_for_memory("fields", needed, fmt::format("{} (the fields of N = {})", what, head.frame.particles.size()))) {
+    return *refused;
   }
   const auto [first, last] = *frames;
   write_fields_from_snapshots({o.snapshots, head.metadata, first, last, grid, o.subtract_shear, o.out, kVersion});

@@ -15,11 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
 #include "io/frame_selection.hpp"
 #include "io/io_error.hpp"
 #include "io/spectra_from_snapshots.hpp"
+#include "spectra/power_spectra.hpp"
+#include "spectra/reciprocal_lattice.hpp"
+#include "spectra/spectra_memory.hpp"
 
 namespace granule::app {
 
@@ -35,6 +39,30 @@ struct SpectraOptions {
 int bad_spectra_input(const std::string& message) {
   fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
   return kExitBadInput;
+}
+
+// The memory of a frame's spectra (its FFT grids, mode maps and rings) and of the frame read beside
+// frame 0, against what the machine has: exit 5, its message naming --max-mode (and --dk).
+std::optional<int> refuse_beyond_memory(const SpectraRequest& request, const SnapshotRead& first) {
+  const SystemParams& system = first.metadata.system;
+  const int dimension = system.dimension;
+  spectra::TransformOptions transform;
+  transform.max_mode = request.max_mode;
+  transform.method = request.method == "exact" ? spectra::SpectralMethod::exact : spectra::SpectralMethod::fast;
+  // The rings of the width asked, or of the default (io/spectra_from_snapshots.cpp); more than
+  // kMaxAnnuli are refused as input by annulus_sums before it allocates them.
+  const ShearFrame box{system.length_x, system.length_y, system.shear_velocity};
+  const double dk = request.dk.value_or(
+      spectra::default_annulus_width(spectra::lattice_for_frame(box, 0.0, dimension, system.length_z)));
+  const double annuli =
+      spectra::annulus_count(dk, spectra::complete_radius_at_any_strain(box, request.max_mode, dimension, system.length_z));
+  const std::size_t particles = first.frame.particles.size();
+  const double needed = frame_copy_bytes(first.frame) +
+                        spectra::spectra_bytes(particles, dimension, transform, annuli <= spectra::kMaxAnnuli ? annuli : 0.0);
+  return refused_for_memory("spectra", needed,
+                            fmt::format("--max-mode {}{} (the {} spectra of N = {} in {}D)", request.max_mode,
+                                        request.dk ? fmt::format(" with --dk {}", *request.dk) : "", request.method,
+                                        particles, dimension));
 }
 
 int analyze_spectra(const SpectraOptions& options) {
@@ -72,9 +100,11 @@ int analyze_spectra(const SpectraOptions& options) {
     return bad_spectra_input("--subtract-shear needs a Lees–Edwards run (this one is periodic, U = 0)");
   }
   request.max_mode = max_mode;
+  // 2. What the machine cannot hold is refused before anything is allocated.
+  if (const auto refused = refuse_beyond_memory(request, first)) return *refused;
   SpectraFromSnapshots analysis(request, first);
 
-  // 2. Frame by frame, saying what each dominant mode is worth.
+  // 3. Frame by frame, saying what each dominant mode is worth.
   try {
     const double l0 = analysis.cluster_length();
     fmt::print("{}\n", spectra::describe_comparison(system, l0, request.false_alarm));
