@@ -230,4 +230,11 @@ WindowResult analyse_window(const WindowSamples& w, const F1Options& options) {
   return r;
 }
 
+double f1_analysis_bytes(std::size_t particles, std::size_t snapshots, std::size_t windows, const F1Options& options) {
+  const double samples = static_cast<double>(particles) * static_cast<double>(snapshots) * static_cast<double>(windows);
+  const double bins = (options.speed_bins + 1.0) * (options.angle_bins + 1.0);
+  constexpr double kGridArrays = 8.0;  // counts, h, h*, ψ, ψ*, the fit's work arrays: a few of that size
+  return 2.0 * 8.0 * samples + 8.0 * bins * (static_cast<double>(snapshots) + kGridArrays);
+}
+
 }  // namespace granule::distribution

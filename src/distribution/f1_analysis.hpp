@@ -108,4 +108,12 @@ F1Estimate fit_counts(const Eigen::MatrixXd& counts, double total, const PolarGr
 // the replicates whose fits all converged (errors.converged_replicates of errors.replicates).
 WindowResult analyse_window(const WindowSamples& samples, const F1Options& options);
 
+// The bytes an f1 analysis of `windows` windows over `snapshots` snapshots of `particles` grains
+// holds at its peak, for the memory check made before it samples: every window's velocities (two
+// doubles per sample; a grain is a sample of each window its cell falls in, at most once per
+// snapshot and window) and, for the window analysed, its polar counts binned once per snapshot
+// (speed_bins × angle_bins doubles each, kept for the bootstrap) and the cumulative function's
+// few arrays of that size.
+double f1_analysis_bytes(std::size_t particles, std::size_t snapshots, std::size_t windows, const F1Options& options);
+
 }  // namespace granule::distribution

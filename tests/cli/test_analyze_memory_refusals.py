@@ -1,7 +1,8 @@
 """End-to-end: analyses that would need more memory than the machine has are refused before they
 allocate it — `analyze spectra --max-mode 256` of a small 3D run (an FFT grid of 1080³ complex values
 and 513³ modes, ~33 GiB), `analyze fields --cells 16384,16384` of a 2D run (~80 GiB of cell moments
-and fields) and `analyze collisions --set fields.cells=[16384,16384]` exit 5 at once with a message
+and fields) `analyze collisions --set fields.cells=[16384,16384]` and `analyze f1` of 250 frames binned on
+4096 × 4096 speeds and angles (~34 GiB) exit 5 at once with a message
 that names the option and write nothing; the same commands with small grids still run.  The refusals
 are checked only where the machine has less memory than they need (MemAvailable or the cgroup limit,
 as Granule reads it)."""
@@ -76,6 +77,16 @@ if 0 < available < 75 * GiB:
             ["analyze", "collisions", disks, "--set", "fields.cells=[16384,16384]", "--out", out], "fields.cells = [16384, 16384]", out)
 else:
     print(f"skipped the field grid refusals: {available / GiB:.0f} GiB available")
+if 0 < available < 30 * GiB:
+    # 250 frames, each binned on 4096 × 4096 speeds and angles for the bootstrap: ~34 GiB.
+    frames = simulate("frames", "--set", "system.area_fraction=0.05", "--set", "output.snapshot_every_collisions_per_particle=0.01",
+                      "--set", "run.until_collisions_per_particle=2.5")
+    out = WORK / "f1_4096.h5"
+    refused("analyze f1 --speed-bins 4096 --angle-bins 4096",
+            ["analyze", "f1", frames / "snapshots.h5", "--density-window", "400±400", "--temperature-window", "1e6±1e6",
+             "--speed-bins", "4096", "--angle-bins", "4096", "--out", out], "--speed-bins 4096 --angle-bins 4096", out)
+else:
+    print(f"skipped the f1 refusal: {available / GiB:.0f} GiB available")
 
 # Grids the machine holds are analysed as before.
 out = WORK / "spectra_small.h5"

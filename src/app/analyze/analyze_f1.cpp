@@ -9,6 +9,7 @@
 #include <new>
 #include <optional>
 
+#include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
 #include "distribution/f1_report.hpp"
@@ -108,6 +109,15 @@ int analyze_f1(const F1CommandOptions& o) {
   F1RunDescription run{o.snapshots, first.metadata, sampling.grid.nx, sampling.grid.ny, o.from_frame,
                        first.frames - o.from_frame, o.subtract_shear_profile, o.profile_angle,
                        o.profile_speed.value_or(0.0), f};
+  const std::size_t window_count = densities.size() * temperatures.size();
+  const double needed = frame_copy_bytes(first.frame) +
+                        f1_analysis_bytes(static_cast<std::size_t>(system.particles), static_cast<std::size_t>(run.frames_used),
+                                          window_count, f);
+  if (const std::optional<int> refused = refused_for_memory(
+          "f1", needed, fmt::format("{} windows over {} frames of N = {} with --speed-bins {} --angle-bins {}", window_count,
+                                    run.frames_used, system.particles, f.speed_bins, f.angle_bins))) {
+    return *refused;
+  }
   std::vector<WindowResult> results;
   try {
     const std::vector<WindowSamples> windows =
