@@ -116,7 +116,8 @@ beta = grazing / grazing.sum() * bins
 excess = np.cumsum(grazing) / grazing.sum() - edges[1:]
 with h5py.File(WORK / "grazing.h5", "w") as f:
     f.attrs.update(format="granule-collisions", format_version=1, particles=40000, restitution=0.6, boundary="periodic",
-                   diameter=0.001, from_c=90.0, to_c=100.0, from_t=1.0, to_t=2.0)
+                   diameter=0.001, shear_velocity=0.0, length_x=1.0, length_y=1.0, from_c=90.0, to_c=100.0, from_t=1.0,
+                   to_t=2.0, density_cells_nx=40, density_cells_ny=40)
     g = f.create_group("impact_parameters")
     g.attrs["window_collisions"] = 40000
     g["bin_edges"] = edges
