@@ -6,10 +6,13 @@
 //
 //   granule_file_fuzz READER ORIGINAL MUTANTS SEED WORK_DIR
 //   granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX        (one mutant, for the CLI fuzz test)
+//   granule_file_fuzz mutate-text ORIGINAL MUTANT SEED INDEX   (one mutant of a text file)
 //   granule_file_fuzz reseal CHECKPOINT                         (digests recomputed after a hand edit)
 //
 // READER: snapshots (a snapshots.h5), fields (a fields.h5), resume (ORIGINAL is a run directory;
-// its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does).
+// its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does),
+// and the text readers of text_readers.hpp (sweep-record, timeseries; `mutate-text` writes one of
+// their mutants).
 // Prints "READER: N mutants, C clean, R refused, F failed" and exits 1 when F > 0.  The mutant
 // being read is described in WORK_DIR/current_mutant.txt (a crash leaves it there).
 #include <csignal>
@@ -25,6 +28,8 @@
 #include "driver/run_session.hpp"
 #include "driver/run_start.hpp"
 #include "fuzz/hdf5_mutator.hpp"
+#include "fuzz/text_mutator.hpp"
+#include "fuzz/text_readers.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/config.hpp"
 #include "io/export_field_source.hpp"
@@ -115,7 +120,9 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
       fs::copy(original, work + "/run", fs::copy_options::recursive);
       options.reseal_digests = k % 2 == 1;
     }
-    const std::string what = fuzz::write_mutant(source, mutant, seed, static_cast<std::uint64_t>(k), options);
+    const std::string what = fuzz::is_text_reader(reader)
+                                 ? fuzz::prepare_text_mutant(reader, original, work, seed, static_cast<std::uint64_t>(k))
+                                 : fuzz::write_mutant(source, mutant, seed, static_cast<std::uint64_t>(k), options);
     std::snprintf(g_current, sizeof g_current, "%s seed %llu index %ld: %s", reader.c_str(),
                   static_cast<unsigned long long>(seed), k, what.c_str());
     {  // what a crash leaves behind: the mutant being read, by its seed and index
@@ -130,6 +137,8 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
       try_one([&] { read_snapshots(mutant); }, g_current, tally);
     } else if (reader == "fields") {
       try_one([&] { read_fields(mutant); }, g_current, tally);
+    } else if (fuzz::is_text_reader(reader)) {
+      try_one([&] { fuzz::read_text_mutant(reader, original, work); }, g_current, tally);
     } else {
       try_one([&] {
         const ConfigResult parsed = load_config_file(work + "/run/config.toml", {});
@@ -155,18 +164,23 @@ int main(int argc, char** argv) {
     std::puts(fuzz::write_mutant(argv[2], argv[3], std::stoull(argv[4]), std::stoull(argv[5]), {}).c_str());
     return 0;
   }
+  if (argc == 6 && std::string(argv[1]) == "mutate-text") {
+    std::puts(fuzz::write_text_mutant(argv[2], argv[3], std::stoull(argv[4]), std::stoull(argv[5])).c_str());
+    return 0;
+  }
   if (argc == 3 && std::string(argv[1]) == "reseal") {
     fuzz::reseal_digests(argv[2]);
     return 0;
   }
   if (argc != 6) {
-    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume ORIGINAL MUTANTS SEED WORK_DIR\n"
+    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|sweep-record|timeseries ORIGINAL MUTANTS SEED WORK_DIR\n"
                          "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n"
+                         "       granule_file_fuzz mutate-text ORIGINAL MUTANT SEED INDEX\n"
                          "       granule_file_fuzz reseal CHECKPOINT\n");
     return 2;
   }
   const std::string reader = argv[1];
-  if (reader != "snapshots" && reader != "fields" && reader != "resume") {
+  if (reader != "snapshots" && reader != "fields" && reader != "resume" && !fuzz::is_text_reader(reader)) {
     std::fprintf(stderr, "granule_file_fuzz: unknown reader %s\n", reader.c_str());
     return 2;
   }
