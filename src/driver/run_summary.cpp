@@ -2,18 +2,15 @@
 
 #include <cmath>
 
+#include "engine/stop_reason_names.hpp"
 #include "granule/version.hpp"
 #include "theory/steady_shear.hpp"
 
 namespace granule::driver {
 
 const char* stop_text(StopReason reason) {
-  switch (reason) {
-    case StopReason::kTimeReached: return "time reached";
-    case StopReason::kCollisionsReached: return "collisions reached";
-    case StopReason::kNoEvents: return "no further events";
-    case StopReason::kInelasticCollapse: return "inelastic collapse";
-    case StopReason::kInterrupted: return "interrupted";
+  for (const auto& [known, name] : kStopReasonNames) {
+    if (known == reason) return name;
   }
   return "unknown";
 }

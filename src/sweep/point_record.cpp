@@ -4,15 +4,37 @@
 #include <sys/wait.h>
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <vector>
 
+#include "engine/stop_reason_names.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json_file.hpp"
+#include "sweep/point_summary.hpp"
 
 namespace granule::sweep {
 
 namespace {
 
 constexpr int kExitCollapse = 3;  // src/app/exit_codes.hpp: outputs written
+
+// A record holds five short values (a run's error line is cut at 500 characters).
+constexpr std::size_t kMaxRecordBytes = 64 * 1024;
+
+// The statuses write_record writes: a point never run has no record.
+const std::vector<std::string> kRecordedStatuses = {"finished", "collapsed", "interrupted", "failed"};
+
+// How the run said it stopped (summary.json "stop_reason").
+StopReason stop_reason_in(const JsonFile& summary) {
+  std::vector<std::string> names;
+  for (const auto& [reason, name] : kStopReasonNames) names.emplace_back(name);
+  const std::string& text = summary.one_of("stop_reason", names);
+  for (const auto& [reason, name] : kStopReasonNames) {
+    if (text == name) return reason;
+  }
+  summary.refuse("stop_reason", "a stop reason");  // one_of accepted only the names above
+}
 
 // The run's own explanation: its first "error:" line, else the last line it printed.
 std::string error_from_log(const std::string& log_path) {
@@ -51,16 +73,14 @@ PointRecord record_of_exit(int wait_status, double seconds, const std::string& l
 }
 
 std::optional<PointRecord> record_from_summary(const SweepDirectory& dir, const SweepPoint& point) {
-  std::ifstream file(dir.run(point) / "summary.json");
-  if (!file) return std::nullopt;
-  const nlohmann::json summary = nlohmann::json::parse(file, nullptr, false);
-  if (summary.is_discarded() || !summary.contains("stop_reason")) return std::nullopt;
-  const std::string reason = summary["stop_reason"].get<std::string>();
-  if (reason == "interrupted") return std::nullopt;
+  const std::optional<JsonFile> summary = read_point_summary(dir, point);
+  if (!summary) return std::nullopt;
+  const StopReason reason = stop_reason_in(*summary);
+  if (reason == StopReason::kInterrupted) return std::nullopt;
   PointRecord r;
-  r.status = reason == "inelastic collapse" ? "collapsed" : "finished";
-  r.exit_code = reason == "inelastic collapse" ? kExitCollapse : 0;
-  r.seconds = summary.value("wall_seconds", 0.0);
+  r.status = reason == StopReason::kInelasticCollapse ? "collapsed" : "finished";
+  r.exit_code = reason == StopReason::kInelasticCollapse ? kExitCollapse : 0;
+  r.seconds = summary->number("wall_seconds", 0.0, std::numeric_limits<double>::max());
   return r;
 }
 
@@ -74,21 +94,31 @@ void write_record(const SweepDirectory& dir, const SweepPoint& point, const Poin
 }
 
 std::optional<PointRecord> read_record(const SweepDirectory& dir, const SweepPoint& point) {
-  std::ifstream file(dir.record(point));
-  if (!file) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(file, nullptr, false);
-  if (j.is_discarded()) return std::nullopt;
+  const std::optional<JsonFile> j = JsonFile::read(
+      dir.record(point), kMaxRecordBytes, 1,
+      fmt::format("the record is damaged: delete it to run point {} again (a run that finished is then "
+                  "taken from its summary.json)",
+                  point.name));
+  if (!j) return std::nullopt;
+  if (j->string("point") != point.name) j->refuse("point", fmt::format("\"{}\", the point the record is named after", point.name));
   PointRecord r;
-  r.status = j.value("status", "pending");
-  r.exit_code = j.value("exit_code", -1);
-  r.error = j.value("error", "");
-  r.seconds = j.value("seconds", 0.0);
+  r.status = j->one_of("status", kRecordedStatuses);
+  r.exit_code = static_cast<int>(j->integer("exit_code", 0, 255));
+  r.error = j->string("error");
+  r.seconds = j->number("seconds", 0.0, std::numeric_limits<double>::max());
   return r;
 }
 
 PointRecord current_record(const SweepDirectory& dir, const SweepPoint& point) {
   if (std::optional<PointRecord> r = read_record(dir, point)) return *r;
   return record_from_summary(dir, point).value_or(PointRecord{});
+}
+
+void check_point_files(const SweepDirectory& dir, const SweepSpec& spec, const std::vector<std::size_t>& indices) {
+  for (const std::size_t k : indices) {
+    read_record(dir, spec.points[k]);
+    record_from_summary(dir, spec.points[k]);
+  }
 }
 
 bool is_done(const PointRecord& record) { return record.status == "finished" || record.status == "collapsed"; }

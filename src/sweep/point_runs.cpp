@@ -81,6 +81,7 @@ std::string progress_line(const SweepPoint& point, const PointRecord& record, bo
 
 std::vector<PointRecord> run_points(const SweepRun& run, const std::vector<std::size_t>& indices, int jobs,
                                     bool print_progress) {
+  check_point_files(run.dir, *run.spec, indices);  // a damaged one refuses the sweep while nothing runs
   std::vector<PointRecord> records(indices.size());
   std::deque<std::size_t> waiting;
   for (std::size_t slot = 0; slot < indices.size(); ++slot) waiting.push_back(slot);

@@ -2,13 +2,14 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "io/atomic_file.hpp"
 #include "sweep/point_record.hpp"
+#include "sweep/point_summary.hpp"
 
 namespace granule::sweep {
 
@@ -17,7 +18,7 @@ namespace {
 using Row = std::map<std::string, std::string>;
 
 // The scalars of a summary, numbers as JSON writes them (exact, shortest); list items by index
-// (box.1 is L_y).
+// (box.1 is L_y).  The recursion is as deep as the summary, which its reader bounds.
 void flatten(const nlohmann::json& value, const std::string& prefix, Row& row) {
   if (value.is_structured()) {
     for (const auto& [key, inner] : value.items()) flatten(inner, prefix.empty() ? key : prefix + "." + key, row);
@@ -30,10 +31,7 @@ void flatten(const nlohmann::json& value, const std::string& prefix, Row& row) {
 
 Row summary_row(const SweepDirectory& dir, const SweepPoint& point) {
   Row row;
-  std::ifstream file(dir.run(point) / "summary.json");
-  if (!file) return row;
-  const nlohmann::json summary = nlohmann::json::parse(file, nullptr, false);
-  if (!summary.is_discarded()) flatten(summary, "", row);
+  if (const std::optional<JsonFile> summary = read_point_summary(dir, point)) flatten(summary->json(), "", row);
   return row;
 }
 

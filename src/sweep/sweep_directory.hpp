@@ -4,16 +4,16 @@
 #pragma once
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 
+#include "io/io_error.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace granule::sweep {
 
 // Bad input to a sweep command (exit code 2): the message is complete and nothing was written.
-struct BadSweepInput : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct BadSweepInput : InputError {
+  using InputError::InputError;
 };
 
 struct SweepDirectory {

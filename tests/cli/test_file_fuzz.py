@@ -11,7 +11,8 @@ files Granule reads itself:
   which figure scripts also read with h5py) given to `granule analyze`, `plot` and `run --resume`,
   each exiting with 0 or 2 within a time limit and writing nothing outside its output.
 
-The measurement files only figure scripts read are fuzzed by test_measurement_fuzz.py."""
+The measurement files only figure scripts read are fuzzed by test_measurement_fuzz.py, the text files
+(sweep records and summaries, timeseries.csv) by test_text_fuzz.py."""
 from fuzz_seeds import MUTANTS, WORK, command_line_sample, fuzz_reader, seed_runs
 from harness import finish
 

@@ -6,13 +6,16 @@
 //
 //   granule_file_fuzz READER ORIGINAL MUTANTS SEED WORK_DIR
 //   granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX        (one mutant, for the CLI fuzz test)
+//   granule_file_fuzz mutate-text ORIGINAL MUTANT SEED INDEX   (one mutant of a text file)
 //   granule_file_fuzz reseal CHECKPOINT                         (digests recomputed after a hand edit)
 //
 // READER: snapshots (a snapshots.h5), fields (a fields.h5), resume (ORIGINAL is a run directory;
 // its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does),
 // collisions, spectra, f1 (the measurement files figure scripts read: the schema check `granule
 // plot` makes before it starts the script; the indices of the mutants it accepts are written to
-// WORK_DIR/accepted.txt, for tests/fuzz/figure_fuzz.py to give to the script itself).
+// WORK_DIR/accepted.txt, for tests/fuzz/figure_fuzz.py to give to the script itself),
+// and the text readers of text_readers.hpp (sweep-record, timeseries; `mutate-text` writes one of
+// their mutants).
 // Prints "READER: N mutants, C clean, R refused, F failed" and exits 1 when F > 0.  The mutant
 // being read is described in WORK_DIR/current_mutant.txt (a crash leaves it there).
 #include <csignal>
@@ -29,6 +32,8 @@
 #include "driver/run_session.hpp"
 #include "driver/run_start.hpp"
 #include "fuzz/hdf5_mutator.hpp"
+#include "fuzz/text_mutator.hpp"
+#include "fuzz/text_readers.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/config.hpp"
 #include "io/export_field_source.hpp"
@@ -129,7 +134,9 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
       fs::copy(original, work + "/run", fs::copy_options::recursive);
       options.reseal_digests = k % 2 == 1;
     }
-    const std::string what = fuzz::write_mutant(source, mutant, seed, static_cast<std::uint64_t>(k), options);
+    const std::string what = fuzz::is_text_reader(reader)
+                                 ? fuzz::prepare_text_mutant(reader, original, work, seed, static_cast<std::uint64_t>(k))
+                                 : fuzz::write_mutant(source, mutant, seed, static_cast<std::uint64_t>(k), options);
     std::snprintf(g_current, sizeof g_current, "%s seed %llu index %ld: %s", reader.c_str(),
                   static_cast<unsigned long long>(seed), k, what.c_str());
     {  // what a crash leaves behind: the mutant being read, by its seed and index
@@ -148,6 +155,8 @@ int run_fuzzer(const std::string& reader, const std::string& original, long muta
       if (try_one([&] { h5::check_measurement_file(mutant, measurement->second); }, g_current, tally) && accepted) {
         std::fprintf(accepted, "%ld\n", k);
       }
+    } else if (fuzz::is_text_reader(reader)) {
+      try_one([&] { fuzz::read_text_mutant(reader, original, work); }, g_current, tally);
     } else {
       try_one([&] {
         const ConfigResult parsed = load_config_file(work + "/run/config.toml", {});
@@ -174,18 +183,24 @@ int main(int argc, char** argv) {
     std::puts(fuzz::write_mutant(argv[2], argv[3], std::stoull(argv[4]), std::stoull(argv[5]), {}).c_str());
     return 0;
   }
+  if (argc == 6 && std::string(argv[1]) == "mutate-text") {
+    std::puts(fuzz::write_text_mutant(argv[2], argv[3], std::stoull(argv[4]), std::stoull(argv[5])).c_str());
+    return 0;
+  }
   if (argc == 3 && std::string(argv[1]) == "reseal") {
     fuzz::reseal_digests(argv[2]);
     return 0;
   }
   if (argc != 6) {
-    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|collisions|spectra|f1 ORIGINAL MUTANTS SEED WORK_DIR\n"
+    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|collisions|spectra|f1|sweep-record|timeseries ORIGINAL MUTANTS SEED WORK_DIR\n"
                          "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n"
+                         "       granule_file_fuzz mutate-text ORIGINAL MUTANT SEED INDEX\n"
                          "       granule_file_fuzz reseal CHECKPOINT\n");
     return 2;
   }
   const std::string reader = argv[1];
-  if (reader != "snapshots" && reader != "fields" && reader != "resume" && kMeasurementReaders.count(reader) == 0) {
+  if (reader != "snapshots" && reader != "fields" && reader != "resume" && kMeasurementReaders.count(reader) == 0 &&
+      !fuzz::is_text_reader(reader)) {
     std::fprintf(stderr, "granule_file_fuzz: unknown reader %s\n", reader.c_str());
     return 2;
   }

@@ -8,6 +8,7 @@
 
 #include "app/plot/plot_command.hpp"
 #include "io/run_files.hpp"
+#include "io/timeseries_csv.hpp"
 #include "render/figure_scripts.hpp"
 
 namespace granule::app {
@@ -56,6 +57,9 @@ int plot_with_script(const ScriptKind& kind, const ScriptArguments& a) {
     for (const char* option : kIsosurfaceOptions) {
       if (was_given(a, option)) throw InputError(fmt::format("{} is for 3D runs only", option));
     }
+    // The script meets only a file the reading layer accepted (draw_figure opens HDF5 inputs
+    // through it; the CSV is read here).
+    if (std::string_view(kind.name) == "timeseries") read_timeseries(r.input);
     status = render::draw_figure(kind.script, r);
   }
   if (status == 0) fmt::print("wrote {}\n", r.out);

@@ -8,7 +8,9 @@
 
 #include <filesystem>
 #include <memory>
+#include <numeric>
 #include <optional>
+#include <vector>
 
 #include "app/command_line.hpp"
 #include "app/exit_codes.hpp"
@@ -93,11 +95,18 @@ int run_over_mpi(const SweepOptions& o) {
       throw CommandFailure{kExitBadInput, "--jobs is for local runs: under --mpi each rank runs one point at a time"};
     if (o.array_task || o.array_count) throw CommandFailure{kExitBadInput, "--mpi and --array-task exclude each other"};
     spec = checked_spec(o);
-    if (world.rank == 0) prepare_sweep_directory(SweepDirectory{o.out}, *spec);
+    if (world.rank == 0) {
+      prepare_sweep_directory(SweepDirectory{o.out}, *spec);
+      // Rank 0 reads every point's record as it hands the points out: a damaged one is refused
+      // here, before any rank starts a point.
+      std::vector<std::size_t> all(spec->points.size());
+      std::iota(all.begin(), all.end(), std::size_t{0});
+      check_point_files(SweepDirectory{o.out}, *spec, all);
+    }
   } catch (const CommandFailure& failure) {
     if (world.rank == 0) fmt::print(stderr, "granule sweep: error: {}\n", failure.message);
     code = failure.code;
-  } catch (const BadSweepInput& error) {
+  } catch (const InputError& error) {  // the spec, DIR, or a record or summary in DIR
     fmt::print(stderr, "granule sweep: error: {}\n", error.what());
     code = kExitBadInput;
   }
@@ -133,7 +142,7 @@ int sweep(const SweepOptions& o) {
   } catch (const CommandFailure& failure) {
     fmt::print(stderr, "granule sweep: error: {}\n", failure.message);
     return failure.code;
-  } catch (const BadSweepInput& error) {
+  } catch (const InputError& error) {  // the spec, DIR, or a record or summary in DIR
     fmt::print(stderr, "granule sweep: error: {}\n", error.what());
     return kExitBadInput;
   }
