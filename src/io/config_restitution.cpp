@@ -2,32 +2,27 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
+
 #include "io/input_ranges.hpp"
 
 namespace granule {
 
 namespace {
 
-const char* kind_name(RestitutionKind kind) {
-  switch (kind) {
-    case RestitutionKind::kThreshold:
-      return "threshold";
-    case RestitutionKind::kViscoelastic:
-      return "viscoelastic";
-    case RestitutionKind::kConstant:
-      break;
-  }
-  return "constant";
-}
+// The names of the laws, in the order of RestitutionKind.
+constexpr const char* kKindNames[] = {"constant", "threshold", "viscoelastic"};
+
+const char* kind_name(RestitutionKind kind) { return kKindNames[static_cast<int>(kind)]; }
 
 }  // namespace
 
 void resolve_restitution_law(const ConfigReader& in, RunConfig& c) {
   RestitutionLaw& law = c.system.restitution_law;
-  const std::string kind = in.text("system.restitution_law", {"constant", "threshold", "viscoelastic"}).value_or("constant");
-  law.kind = kind == "threshold" ? RestitutionKind::kThreshold
-             : kind == "viscoelastic" ? RestitutionKind::kViscoelastic
-                                      : RestitutionKind::kConstant;
+  const std::string kind = in.text("system.restitution_law", {std::begin(kKindNames), std::end(kKindNames)}).value_or("constant");
+  for (int k = 0; k < static_cast<int>(std::size(kKindNames)); ++k) {
+    if (kind == kKindNames[k]) law.kind = static_cast<RestitutionKind>(k);
+  }
   law.reference_radius = 0.5 * c.system.diameter;
   const auto needs = [&](const char* key, RestitutionKind owner) {
     if (in.has(key) && law.kind != owner) {
