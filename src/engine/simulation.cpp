@@ -138,6 +138,7 @@ void Simulation<D>::rebuild() {
 template <int D>
 void Simulation<D>::start_production(const SystemParams& production) {
   params_.restitution = production.restitution;
+  params_.restitution_law = production.restitution_law;
   params_.roughness.tangential_restitution = production.roughness.tangential_restitution;
   set_walls(production.wall);
   clock_base_ = -t_now_;

@@ -242,15 +242,17 @@ class Simulation {
   // The collision laws (physics/collision_law.hpp): between grains, and between a grain and the
   // wall at `face` (its own restitutions, the grains' TC model).
   CollisionLaw pair_law() const {
-    return {params_.restitution, params_.tc_duration, {params_.roughness.tangential_restitution, params_.roughness.friction}, mass_.empty()};
+    return {params_.restitution, params_.tc_duration, {params_.roughness.tangential_restitution, params_.roughness.friction},
+            mass_.empty(), params_.restitution_law};
   }
   CollisionLaw wall_law(int face) const {
     const WallParams& wall = boundaries_.wall(face);
-    return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true};
+    return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true,
+            params_.restitution_law};
   }
-  // The restitution `law` gives a contact of i with j (j < 0: a wall) now, and marking the
-  // contact: the two places where the TC model's history is read and written.
-  double contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) const;
+  // Whether a contact of i with j (j < 0: a wall) now falls within the TC model's duration, and
+  // marking the contact: the two places where the TC model's history is read and written.
+  bool recent_contact(const CollisionLaw& law, std::int32_t i, std::int32_t j) const;
   void mark_contact(std::int32_t i, std::int32_t j);
   // Contact distance σ_ij = (σ_i + σ_j)/2 (σ for a monodisperse run).
   double contact_distance(std::int32_t i, std::int32_t j) const {

@@ -39,9 +39,9 @@ ContactSide<D> Simulation<D>::contact_side(std::int32_t i, const Vector& velocit
 }
 
 template <int D>
-double Simulation<D>::contact_restitution(const CollisionLaw& law, std::int32_t i, std::int32_t j) const {
-  if (!law.keeps_history()) return law.restitution;
-  return law.restitution_at(t_now_, last_collision_[at(i)], last_collision_[at(j < 0 ? i : j)]);
+bool Simulation<D>::recent_contact(const CollisionLaw& law, std::int32_t i, std::int32_t j) const {
+  if (!law.keeps_history()) return false;
+  return law.within_contact_duration(t_now_, last_collision_[at(i)], last_collision_[at(j < 0 ? i : j)]);
 }
 
 template <int D>
@@ -56,12 +56,12 @@ void Simulation<D>::mark_contact(std::int32_t i, std::int32_t j) {
 template Spin<2> Simulation<2>::spin(std::int32_t) const;
 template void Simulation<2>::set_spin(std::int32_t, const Spin<2>&);
 template ContactSide<2> Simulation<2>::contact_side(std::int32_t, const Vec<2>&) const;
-template double Simulation<2>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t) const;
+template bool Simulation<2>::recent_contact(const CollisionLaw&, std::int32_t, std::int32_t) const;
 template void Simulation<2>::mark_contact(std::int32_t, std::int32_t);
 template Spin<3> Simulation<3>::spin(std::int32_t) const;
 template void Simulation<3>::set_spin(std::int32_t, const Spin<3>&);
 template ContactSide<3> Simulation<3>::contact_side(std::int32_t, const Vec<3>&) const;
-template double Simulation<3>::contact_restitution(const CollisionLaw&, std::int32_t, std::int32_t) const;
+template bool Simulation<3>::recent_contact(const CollisionLaw&, std::int32_t, std::int32_t) const;
 template void Simulation<3>::mark_contact(std::int32_t, std::int32_t);
 
 }  // namespace granule

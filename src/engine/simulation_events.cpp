@@ -103,7 +103,7 @@ CollisionPlan<D> Simulation<D>::plan_collision(std::int32_t i, std::int32_t j) c
   ContactSide<D> first = contact_side(i, v1);
   ContactSide<D> second = contact_side(j, v2);
   const double energy_before = observers_.empty() ? 0.0 : first.kinetic_energy() + second.kinetic_energy();
-  const ContactOutcome<D> outcome = law.collide(first, second, k_hat, contact_restitution(law, i, j));
+  const ContactOutcome<D> outcome = law.collide(first, second, k_hat, law.restitution_of(first, second, k_hat, recent_contact(law, i, j)));
   Vector v2_after = second.velocity;
   v2_after[0] -= image.shift.velocity_x;  // its own velocity, not its image's
   return {i, j, true, flight_through_now(i, first.velocity), flight_through_now(j, v2_after), first, second, outcome,
@@ -179,7 +179,7 @@ WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   ContactSide<D> grain = contact_side(i, before);
   ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
   const double energy_before = observers_.empty() ? 0.0 : grain.kinetic_energy();
-  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, contact_restitution(law, i, -1));
+  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, law.restitution_of(grain, wall, k_hat, recent_contact(law, i, -1)));
   return {i, face, true, flight_through_now(i, grain.velocity), grain, outcome, before, energy_before};
 }
 

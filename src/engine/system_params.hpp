@@ -11,6 +11,7 @@
 #include "boundary/shear_protocol.hpp"
 #include "boundary/wall.hpp"
 #include "engine/particle_record.hpp"
+#include "physics/restitution_law.hpp"
 
 namespace granule {
 
@@ -53,6 +54,9 @@ struct SystemParams {
   // TC model (Luding & McNamara 1998): a collision is elastic if either partner collided less
   // than tc_duration ago.  0 switches it off.
   double tc_duration = 0.0;
+  // How ẽ (and each wall's e_w) depends on the impact speed: constant (the thesis), elastic below a
+  // threshold, or viscoelastic (physics/restitution_law.hpp).
+  RestitutionLaw restitution_law;
   ShearHistory shear_history;
   int dimension = 2;            // d: disks (2) or spheres (3)
   double length_z = 1.0;        // L_z (vorticity direction, 3D only)
@@ -76,6 +80,7 @@ struct SystemParams {
 // Simulation::start_production switches the production values on.
 inline SystemParams elastic_prerun(SystemParams params) {
   params.restitution = 1.0;
+  params.restitution_law = {};
   params.roughness.tangential_restitution = -1.0;
   for (WallParams& wall : params.wall) {
     wall.restitution = 1.0;

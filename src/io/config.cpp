@@ -13,6 +13,7 @@
 #include "events/event_slot.hpp"
 #include "io/config_geometry.hpp"
 #include "io/config_reader.hpp"
+#include "io/config_restitution.hpp"
 #include "io/config_roughness.hpp"
 #include "io/config_shear.hpp"
 #include "io/config_walls.hpp"
@@ -27,7 +28,8 @@ const ConfigSchema& schema() {
       {"", {"seed"}},
       {"system",
        {"dimension", "particles", "area_fraction", "packing_fraction", "diameter", "diameters", "masses", "box",
-        "restitution", "tc_duration", "gravity", "tangential_restitution", "inertia_factor", "friction"}},
+        "restitution", "restitution_law", "elastic_below", "viscoelastic_constant", "tc_duration", "gravity",
+        "tangential_restitution", "inertia_factor", "friction"}},
       {"boundary",
        {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance", "wall_axes",
         "wall_restitution", "wall_tangential_restitution"}},
@@ -95,6 +97,7 @@ RunConfig resolve(const toml::table& root) {
   resolve_geometry(in, c);
   s.restitution = in.number("system.restitution", kRestitutions).value_or(0.6);
   s.tc_duration = in.number("system.tc_duration", kContactDurations, " (0 switches the TC model off)").value_or(0.0);
+  resolve_restitution_law(in, c);
   resolve_speeds(in, c);
   if (const auto from = in.path_text("initial.from")) {
     for (const char* key : {"initial.temperature", "initial.temperature_over_steady", "initial.shear_profile", "initial.placement",
@@ -271,7 +274,8 @@ std::string to_toml(const RunConfig& c) {
   std::string out = "# Fully resolved configuration written by granule run: repeat the run with\n"
                     "#   granule run config.toml\n";
   out += fmt::format("seed = {}\n\n[system]\n", c.seed) + geometry_to_toml(c);
-  out += fmt::format("restitution = {:.17g}\ntc_duration = {:.17g}\n", s.restitution, s.tc_duration);
+  if (s.restitution_law.kind != RestitutionKind::kViscoelastic) out += fmt::format("restitution = {:.17g}\n", s.restitution);
+  out += restitution_law_to_toml(c) + fmt::format("tc_duration = {:.17g}\n", s.tc_duration);
   out += roughness_to_toml(c) + gravity_to_toml(c) + "\n";
   out += speeds_to_toml(c) + rotational_temperature_to_toml(c);
   const char* placement = c.placement == Placement::kRandom ? "random" : c.placement == Placement::kLattice ? "lattice" : "auto";

@@ -19,13 +19,18 @@ std::string describe_system(const RunConfig& config) {
 }
 
 std::string collision_model_text(const SystemParams& s) {
+  const RestitutionLaw& law = s.restitution_law;
+  const std::string e = law.kind == RestitutionKind::kThreshold
+                            ? fmt::format("e = {} (1 below the normal impact speed {:g})", s.restitution, law.elastic_below)
+                        : law.kind == RestitutionKind::kViscoelastic
+                            ? fmt::format("viscoelastic e(g) = 1 − 1.15344 δ g^(1/5) + … with δ = {:g}", law.viscoelastic_constant)
+                            : fmt::format("e = {}", s.restitution);
   if (s.tc_duration > 0.0) {
-    return fmt::format("e = {} with the TC model (Luding & McNamara 1998): a collision within t_c = {:g} of either "
+    return fmt::format("{} with the TC model (Luding & McNamara 1998): a collision within t_c = {:g} of either "
                        "grain's previous collision is elastic",
-                       s.restitution, s.tc_duration);
+                       e, s.tc_duration);
   }
-  return fmt::format("e = {} in every collision (TC model off: an inelastic collapse stops the run with exit 3)",
-                     s.restitution);
+  return fmt::format("{} in every collision (TC model off: an inelastic collapse stops the run with exit 3)", e);
 }
 
 std::vector<std::string> describe_surfaces(const RunConfig& config) {

@@ -59,6 +59,10 @@ inline constexpr NumberRange kTangentialRestitutions{-1.0, 1.0};
 inline constexpr NumberRange kInertiaFactors{0.0, 1.0, true, false};
 inline constexpr NumberRange kFrictions{0.0, kUnbounded, false, true};
 inline constexpr NumberRange kContactDurations{0.0, kUnbounded, false, true};
+// The speed laws of ẽ (physics/restitution_law.hpp): the threshold speed v_c > 0 and the
+// viscoelastic constant δ > 0, both finite.
+inline constexpr NumberRange kThresholdSpeeds{0.0, kUnbounded, true, true};
+inline constexpr NumberRange kViscoelasticConstants{0.0, kUnbounded, true, true};
 
 // Largest box side over the diameter: a position x ≤ L is stored to L·2⁻⁵³, so at L/σ = 1e9
 // contacts are still resolved to 1e-7 σ; it also keeps every cell count of the engine's grid

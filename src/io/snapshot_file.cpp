@@ -71,7 +71,9 @@ auto& spin_column(State& state, int k) { return state.spin(state.dimension == 3 
 // The parameters of rough grains, walls and gravity as root attributes, each group only when the run has it: roughness
 // (`tangential_restitution` β, `inertia_factor` q, `friction` μ, +inf without a Coulomb limit),
 // walls (`walls` [x, y, z] 0/1, and per face 2·axis + side `wall_restitution`,
-// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3)), `gravity` [g_x, g_y, g_z].
+// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3)), `gravity` [g_x, g_y, g_z], and a
+// speed-dependent restitution (`restitution_law` "threshold" with `elastic_below`, or
+// "viscoelastic" with `viscoelastic_constant`).
 void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
   if (p.roughness.rough) {
     write_attribute(f, "tangential_restitution", H5T_NATIVE_DOUBLE, &p.roughness.tangential_restitution);
@@ -92,6 +94,14 @@ void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
     write_attribute(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
   }
   if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+  const RestitutionLaw& law = p.restitution_law;
+  if (law.kind == RestitutionKind::kThreshold) {
+    write_string_attribute(f, "restitution_law", "threshold");
+    write_attribute(f, "elastic_below", H5T_NATIVE_DOUBLE, &law.elastic_below);
+  } else if (law.kind == RestitutionKind::kViscoelastic) {
+    write_string_attribute(f, "restitution_law", "viscoelastic");
+    write_attribute(f, "viscoelastic_constant", H5T_NATIVE_DOUBLE, &law.viscoelastic_constant);
+  }
 }
 
 void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
@@ -116,6 +126,19 @@ void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
     }
   }
   if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+  if (has_attribute(f, "restitution_law")) {
+    const std::string law = read_string_attribute(f, "restitution_law");
+    if (law == "threshold") {
+      p.restitution_law.kind = RestitutionKind::kThreshold;
+      p.restitution_law.elastic_below = read_attribute<double>(f, "elastic_below", H5T_NATIVE_DOUBLE);
+    } else if (law == "viscoelastic") {
+      p.restitution_law.kind = RestitutionKind::kViscoelastic;
+      p.restitution_law.viscoelastic_constant = read_attribute<double>(f, "viscoelastic_constant", H5T_NATIVE_DOUBLE);
+    } else {
+      throw InputError(file_name(f) + ": attribute restitution_law is \"" + law + "\"; expected threshold or viscoelastic");
+    }
+    p.restitution_law.reference_radius = 0.5 * p.diameter;
+  }
 }
 
 // What is wrong with a frame's clock and counters: times, strains, offsets and U(t) finite, counts

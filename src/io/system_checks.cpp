@@ -53,6 +53,12 @@ std::vector<std::string> system_problems(const SystemParams& s) {
   }
   require(problems, "restitution", s.restitution, kRestitutions);
   require(problems, "tc_duration", s.tc_duration, kContactDurations);
+  if (s.restitution_law.kind == RestitutionKind::kThreshold) {
+    require(problems, "elastic_below", s.restitution_law.elastic_below, kThresholdSpeeds);
+  }
+  if (s.restitution_law.kind == RestitutionKind::kViscoelastic) {
+    require(problems, "viscoelastic_constant", s.restitution_law.viscoelastic_constant, kViscoelasticConstants);
+  }
   require_finite(problems, "shear_velocity", s.shear_velocity);
   for (int a = 0; a < 3; ++a) require_finite(problems, fmt::format("gravity along {}", kAxes[a]), s.gravity[static_cast<std::size_t>(a)]);
   if (s.roughness.rough) {

@@ -1,7 +1,8 @@
 // The collision law: the one place where the outcome of a contact is decided, for two grains and
-// for a grain and a wall alike.  A law is a normal restitution ẽ (thesis eq 1.2), optionally the
-// TC model against inelastic collapse (Luding & McNamara 1998), and a tangential law for rough
-// grains and rough walls (β and Coulomb μ, physics/rough_collision_rule.hpp).  The arithmetic
+// for a grain and a wall alike.  A law is a normal restitution ẽ (thesis eq 1.2) and how it
+// depends on the impact speed (physics/restitution_law.hpp), optionally the TC model against
+// inelastic collapse (Luding & McNamara 1998), and a tangential law for rough grains and rough
+// walls (β and Coulomb μ, physics/rough_collision_rule.hpp).  The arithmetic
 // follows the sides: two smooth grains collide by thesis eq (1.2) (physics/collision_rule.hpp),
 // anything that spins, and every wall, by Walton's rule, which reduces to it.
 #pragma once
@@ -11,6 +12,7 @@
 
 #include "geometry/vec.hpp"
 #include "physics/collision_rule.hpp"
+#include "physics/restitution_law.hpp"
 #include "physics/rough_collision_rule.hpp"
 
 namespace granule {
@@ -55,13 +57,22 @@ struct CollisionLaw {
   // Equal unit masses (a monodisperse system): thesis eq (1.2) in its own form, whose bits the
   // golden tier fixes; other masses by the reduced mass.
   bool unit_masses = true;
+  RestitutionLaw speed_law;  // ẽ of the impact speed; constant (the thesis) by default
 
   bool keeps_history() const { return tc_duration > 0.0; }
-  // The restitution of a contact at `now` between grains whose last contacts were at `last_first`
-  // and `last_second` (a wall's: pass the grain's twice).
-  double restitution_at(double now, double last_first, double last_second) const {
-    if (keeps_history() && (now - last_first < tc_duration || now - last_second < tc_duration)) return 1.0;
-    return restitution;
+  // Whether a contact at `now` between grains whose last contacts were at `last_first` and
+  // `last_second` (a wall's: pass the grain's twice) falls within the TC model's duration.
+  bool within_contact_duration(double now, double last_first, double last_second) const {
+    return keeps_history() && (now - last_first < tc_duration || now - last_second < tc_duration);
+  }
+  // The restitution of the contact of `first` and `second` along k̂: 1 within the TC model's
+  // duration (`recent`), else ẽ of the speed law at the normal impact speed (v₁ − v₂)·k̂.
+  template <int D>
+  double restitution_of(const ContactSide<D>& first, const ContactSide<D>& second, const Vec<D>& k_hat, bool recent) const {
+    if (recent) return 1.0;
+    if (speed_law.constant()) return restitution;
+    return speed_law.at(restitution, dot(first.velocity - second.velocity, k_hat), first.radius, first.mass, second.radius,
+                        second.mass);
   }
 
   // The contact of `first` and `second` (k̂ the unit vector from first to second, approaching),

@@ -78,6 +78,7 @@ struct GoldenCase {
     double wall_tangential_restitution = -1.0;  // > −1: rough walls
     double wall_velocity = 0.0;                 // y walls moving along x at ∓U/2 (a wall-driven shear)
   } surfaces{};
+  RestitutionLaw speed_law{};  // how ẽ (and e_w) depend on the impact speed in production
 };
 
 // The run of a case, its engine renumbering its particles every `renumber_every` events per
@@ -135,6 +136,8 @@ GoldenRun final_state(const GoldenCase& k, double renumber_every) {
   SystemParams production = p;
   production.restitution = k.restitution;
   production.roughness.tangential_restitution = k.tangential_restitution;
+  production.restitution_law = k.speed_law;
+  production.restitution_law.reference_radius = 0.5 * p.diameter;
   sim.start_production(production);
   const auto target = std::llround(k.collisions_per_particle * static_cast<double>(k.particles));
   EXPECT_EQ(sim.run(kInf, target), StopReason::kCollisionsReached);
@@ -197,7 +200,14 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"rough_disks_rough_walls_couette", 1500, 0.2, 0.9, 0.0, 1e-6, 30.0, 22, 0x74625fb342789f1bULL, false, 2, 1.0, 0.4,
                                  {{false, true, false}, {}, 0.9, 0.5, 5.0}},
                       GoldenCase{"rough_spheres_rough_floor_gravity", 1500, 0.2, 0.9, 0.0, 1e-7, 30.0, 23, 0xbe4693e8c492598cULL, false, 3, 1.0, 0.3,
-                                 {{false, false, true}, {0.0, 0.0, -0.5}, 0.9, 0.2}}),
+                                 {{false, false, true}, {0.0, 0.0, -0.5}, 0.9, 0.2}},
+                      // Restitution that depends on the impact speed: a viscoelastic mixture of
+                      // disks on a floor under gravity (pairs and walls, other radii and masses),
+                      // and spheres elastic below a threshold speed, with the TC model.
+                      GoldenCase{"viscoelastic_disks_mixture_floor", 1500, 0.15, 1.0, 0.0, 0.0, 30.0, 31, 0xa8ad8b8001e193e0ULL, false, 2, 1.4, -1.0,
+                                 {{false, true, false}, {0.0, -0.5, 0.0}, 1.0}, {RestitutionKind::kViscoelastic, 0.0, 0.1}},
+                      GoldenCase{"threshold_spheres_tc", 1500, 0.2, 0.7, 0.0, 1e-7, 30.0, 32, 0xe2e959434348f31fULL, false, 3, 1.0, -1.0, {},
+                                 {RestitutionKind::kThreshold, 0.3}}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace

@@ -169,3 +169,20 @@ def test_ctrl_c_stops_a_run_directory_with_its_checkpoint(tmp_path, granule_cli)
     resumed = granule_cli("run", "--resume", out, "--set", f"run.until_collisions_per_particle={end}")
     assert resumed.returncode == 0, resumed.stderr
     assert json.loads((out / "summary.json").read_text())["c"] == pytest.approx(end, abs=1e-4)
+
+
+def test_speed_dependent_restitution_from_a_dict(small_config):
+    """The restitution laws run from Python as from TOML: a viscoelastic gas loses energy without a
+    TC model and without collapse, and its resolved configuration names the law."""
+    config = {**small_config, "system": {"particles": 500, "packing_fraction": 0.1, "restitution_law": "viscoelastic",
+                                         "viscoelastic_constant": 0.1}}
+    sim = granule.Simulation(config)
+    assert 'restitution_law = "viscoelastic"' in sim.config_toml
+    before = float(np.mean(np.sum(sim.velocities ** 2, axis=1)))
+    assert sim.run(until_collisions_per_particle=20) == "collisions reached"
+    after = float(np.mean(np.sum(sim.velocities ** 2, axis=1)))
+    assert 0.0 < after < 0.5 * before
+    threshold = {**small_config, "system": {**small_config["system"], "restitution_law": "threshold", "elastic_below": 0.1}}
+    assert 'elastic_below = 0.1' in granule.Simulation(threshold).config_toml
+    with pytest.raises(ValueError, match="system.viscoelastic_constant is for system.restitution_law"):
+        granule.Simulation({**small_config, "system": {**small_config["system"], "viscoelastic_constant": 0.1}})

@@ -34,6 +34,8 @@ const std::vector<std::vector<std::string>> kNumericKeys = {
     {"system.diameter"},
     {"system.restitution"},
     {"system.tc_duration"},
+    {"system.elastic_below", "system.restitution_law=\"threshold\""},
+    {"system.viscoelastic_constant", "system.restitution_law=\"viscoelastic\""},
     {"boundary.shear_velocity", "boundary.kind=\"lees-edwards\""},
     {"initial.temperature"},
     {"initial.equilibrate"},
@@ -149,6 +151,20 @@ TEST(ConfigValidation, RestitutionInZeroOne) {
   expect_refused({"system.restitution=2"}, {"system.restitution = 2", "(0, 1]"});
 }
 
+TEST(ConfigValidation, RestitutionLawsTakeTheirOwnKeysOnly) {
+  expect_accepted({"system.restitution_law=\"threshold\"", "system.elastic_below=0.1"});
+  expect_accepted({"system.restitution_law=\"viscoelastic\"", "system.viscoelastic_constant=0.05"});
+  expect_refused({"system.restitution_law=\"linear\""}, {"system.restitution_law", "constant", "threshold", "viscoelastic"});
+  expect_refused({"system.restitution_law=\"threshold\""}, {"needs system.elastic_below"});
+  expect_refused({"system.restitution_law=\"viscoelastic\""}, {"needs system.viscoelastic_constant"});
+  expect_refused({"system.elastic_below=0.1"}, {"system.elastic_below is for system.restitution_law = \"threshold\""});
+  expect_refused({"system.restitution_law=\"threshold\"", "system.elastic_below=0.1", "system.viscoelastic_constant=0.05"},
+                 {"system.viscoelastic_constant is for system.restitution_law = \"viscoelastic\""});
+  expect_refused({"system.restitution_law=\"viscoelastic\"", "system.viscoelastic_constant=0.05", "system.restitution=0.8"},
+                 {"system.restitution cannot be combined"});
+  expect_refused({"system.restitution_law=\"threshold\"", "system.elastic_below=0"}, {"system.elastic_below = 0", "(0, "});
+}
+
 TEST(ConfigValidation, TemperatureBetween1em60And1e60) {
   expect_accepted({"initial.temperature=1e-60"});
   expect_accepted({"initial.temperature=1e60"});
@@ -248,6 +264,8 @@ TEST(ConfigValidation, ExtremeValidConfigurationsRoundTrip) {
       {"system.particles=2147483647", "engine.particles_per_cell=8", "run.until_time=1e-300",
        "initial.equilibrate=2147483647e-9", "collisions.density_windows=[[0, 1e300]]"},
       {"initial.from=\"runs/a\"", "initial.frame=3", "boundary.kind=\"lees-edwards\"", "boundary.shear_velocity=2"},
+      {"system.restitution_law=\"threshold\"", "system.elastic_below=1e-300"},
+      {"system.restitution_law=\"viscoelastic\"", "system.viscoelastic_constant=1e300"},
   };
   for (const auto& overrides : cases) {
     const ConfigResult first = parse(overrides);
