@@ -4,7 +4,7 @@ untrusted too.  Mutants of small real outputs (tests/cli/fuzz_seeds.py) meet:
 - the schema check `granule plot` makes before it starts a script (io/file_schema.hpp), in one
   process (tests/fuzz/file_fuzz.cpp): GRANULE_FUZZ_MUTANTS (default 2000) mutants per file, each
   accepted or refused, never a crash, a hang or another error;
-- the figure scripts themselves: GRANULE_FUZZ_FIGURE_MUTANTS (default 50) of the accepted mutants
+- the figure scripts themselves: GRANULE_FUZZ_FIGURE_MUTANTS (default 30) of the accepted mutants
   per file and seed run, spread evenly over them (tests/fuzz/figure_fuzz.py: each drawn in a child
   forked from one interpreter), each drawn or refused with exit 2, never a crash, a hang, an
   exception past the script's guard or a stray file (GRANULE_FUZZ_FIGURES=0 skips them: the
@@ -19,7 +19,7 @@ from fuzz_seeds import FUZZER, MUTANTS, SEED, WORK, command_line_sample, fuzz_re
 from harness import check, finish
 
 FIGURES = os.environ.get("GRANULE_FUZZ_FIGURES", "1") == "1"
-os.environ.setdefault("GRANULE_FUZZ_FIGURE_MUTANTS", "50")
+os.environ.setdefault("GRANULE_FUZZ_FIGURE_MUTANTS", "30")
 FIGURE_FUZZ = Path(__file__).resolve().parents[1] / "fuzz" / "figure_fuzz.py"
 FIGURE_OPTIONS = {"collisions": [], "spectra": [], "f1": ["--dpi", "40"]}
 

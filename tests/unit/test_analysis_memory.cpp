@@ -79,7 +79,9 @@ TEST(AnalysisMemory, SpectraPhasesByHand) {
   using spectra::TransformOptions;
   // 2D, exact, M = 10: 21² = 441 modes.  The sums: 3 fields × 16 B × 441 = 21168; the maps beside
   // them: 6 arrays × 8 B × 441 = 21168; the weights of N = 100: 2 × 8 × 100 = 1600.
-  TransformOptions exact{10, SpectralMethod::exact};
+  TransformOptions exact;
+  exact.max_mode = 10;
+  exact.method = SpectralMethod::exact;
   EXPECT_EQ(spectra::spectra_bytes(100, 2, exact, 0.0), 21168.0 + 21168.0);
   // 10^6 rings beside the maps: 7 arrays of 8 B, and as much again for the caller.
   EXPECT_EQ(spectra::spectra_bytes(100, 2, exact, 1e6), 21168.0 + 2 * 7 * 8 * 1e6);
@@ -87,14 +89,16 @@ TEST(AnalysisMemory, SpectraPhasesByHand) {
   // 2D, fast, M = 10: n = 45 (the first 2^a 3^b 5^c ≥ 2·21), w = 8.  Depositing: the padded grid of
   // 3 fields, 3 × 8 B × (45 + 16)² = 89304, folded into 2 complex grids, 2 × 16 B × 45² = 64800;
   // the sums and a packed pair after it (4 × 16 B × 441 = 28224) are smaller; + the weights.
-  TransformOptions fast_2d{10, SpectralMethod::fast};
+  TransformOptions fast_2d;
+  fast_2d.max_mode = 10;
   ASSERT_EQ(spectra::fft_grid_size(10, fast_2d.gridding), 45);
   EXPECT_EQ(spectra::spectra_bytes(100, 2, fast_2d, 0.0), 1600.0 + 64800.0 + 89304.0);
 
   // 3D, fast, M = 4: 9³ = 729 modes, n = 18.  The sums (4 fields × 16 B × 729 = 46656), the complex
   // n³ grid (16 B × 5832 = 93312), its planes' kept modes (18 × 81 × 16 B = 23328) and a packed pair
   // (729 × 16 B = 11664), beside the weights of N = 1000 (3 × 8 B × 1000 = 24000).
-  TransformOptions fast_3d{4, SpectralMethod::fast};
+  TransformOptions fast_3d;
+  fast_3d.max_mode = 4;
   ASSERT_EQ(spectra::fft_grid_size(4, fast_3d.gridding), 18);
   EXPECT_EQ(spectra::spectra_bytes(1000, 3, fast_3d, 0.0), 24000.0 + 46656.0 + 93312.0 + 23328.0 + 11664.0);
 }
