@@ -102,11 +102,15 @@ def run(main):
     """Runs a script's main.  What h5py, NumPy or the JSON reader raise while a damaged, truncated
     or foreign input is read (a missing dataset or key, a wrong shape, an attribute of several
     values where one is expected, a value no number can be made of, a failed checksum, an array too
-    large to allocate) is bad input: exit 2 with the reason, nothing written."""
+    large to allocate, values finite but so far apart that matplotlib cannot lay the figure out) is
+    bad input: exit 2 with the reason, nothing written."""
+    from numpy.linalg import LinAlgError
+
     kind = Path(sys.argv[0]).stem
     try:
         sys.exit(main())
-    except (OSError, KeyError, ValueError, IndexError, TypeError, AttributeError, ArithmeticError, MemoryError) as error:
+    except (OSError, KeyError, ValueError, IndexError, TypeError, AttributeError, ArithmeticError, MemoryError,
+            LinAlgError) as error:
         source = sys.argv[1] if len(sys.argv) > 1 else "the input"
         fail(kind, f"cannot read {source}: {type(error).__name__}: {error}")
 
