@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "boundary/moving_wall_hit.hpp"
 #include "boundary/periodic_wrap.hpp"
 #include "boundary/shear_frame.hpp"
 #include "boundary/wall.hpp"
@@ -46,13 +47,14 @@ class BoxBoundaries {
   // Lees–Edwards images elsewhere; `frame` holds L_x, L_y and the present image velocity.
   BoxBoundaries(const std::array<bool, 3>& walls, const std::array<WallParams, 6>& wall, const ShearFrame& frame,
                 double length_z)
-      : wall_(wall), frame_(frame), length_{frame.length_x, frame.length_y, length_z} {
+      : frame_(frame), length_{frame.length_x, frame.length_y, length_z} {
     for (int a = 0; a < D; ++a) {
       kind_[static_cast<std::size_t>(a)] = walls[static_cast<std::size_t>(a)] ? AxisBoundary::kWalls
                                            : a == 1                           ? AxisBoundary::kLeesEdwards
                                                                               : AxisBoundary::kPeriodic;
       walled_ = walled_ || !has_images(a);
     }
+    set_walls(wall);
   }
 
   AxisBoundary kind(int axis) const { return kind_[static_cast<std::size_t>(axis)]; }
@@ -71,7 +73,21 @@ class BoxBoundaries {
   double& image_velocity() { return frame_.shear_velocity; }
   double image_velocity() const { return frame_.shear_velocity; }
   const WallParams& wall(int face) const { return wall_[static_cast<std::size_t>(face)]; }
-  std::array<WallParams, 6>& walls() { return wall_; }
+  // New wall parameters (the restitutions of production), with their drives.
+  void set_walls(const std::array<WallParams, 6>& wall) {
+    wall_ = wall;
+    for (std::size_t face = 0; face < 6; ++face) {
+      const WallParams& w = wall_[face];
+      along_[face] = ShearProtocol(w.velocity[static_cast<std::size_t>(w.along_axis)], w.along);
+      driven_[face] = !along_[face].constant();
+      normal_[face] = w.motion.velocity();
+      moves_[face] = w.motion.moves() && !has_images(static_cast<int>(face / 2));
+    }
+  }
+  // The walls follow their drives from production time 0 on; before (the elastic pre-run) they
+  // rest at their faces and slide at their steady velocities.
+  void set_drives_running(bool running) { drives_running_ = running; }
+  bool moving(int face) const { return drives_running_ && moves_[static_cast<std::size_t>(face)]; }
 
   // The image across the face of `axis` in `direction` (±1) at strain s; an axis with images only.
   FaceImage image_across(int axis, int direction, double strain) const {
@@ -128,23 +144,38 @@ class BoxBoundaries {
 
   // The earliest wall contact of a grain of radius `radius()` now at r moving at v on `flight`
   // (motion/motion.hpp), if earlier than `best`: its delay into `best` and its face into `face`.
-  // Contact is when the centre is one radius from the wall.
+  // Contact is when the centre is one radius from the wall; `now` is the production time (where
+  // the moving walls are).
   template <typename Flight, typename Radius>
-  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, Radius&& grain_radius, double& best,
-                         int& face) const {
+  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, Radius&& grain_radius, double now,
+                         double& best, int& face) const {
     if (!walled_) return;
     const double radius = grain_radius();
     for (int axis = 0; axis < D; ++axis) {
       if (has_images(axis)) continue;
-      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], radius, -1); t < best) {
-        best = t;
-        face = 2 * axis;
-      }
-      if (const double t = flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1); t < best) {
-        best = t;
-        face = 2 * axis + 1;
+      for (int side = 0; side < 2; ++side) {
+        const int f = 2 * axis + side;
+        const double t = moving(f) ? moving_wall_hit(flight, axis, r[axis], v[axis], moving_plane(f, radius), now, best,
+                                                     gap_tolerance(axis))
+                         : side == 0 ? flight.time_to_plane(axis, r[axis], v[axis], radius, -1)
+                                     : flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1);
+        if (t < best) {
+          best = t;
+          face = f;
+        }
       }
     }
+  }
+  // The contact plane of a moving wall for a grain of radius `radius` (boundary/moving_wall_hit.hpp).
+  MovingPlane moving_plane(int face, double radius) const {
+    const auto f = static_cast<std::size_t>(face);
+    return {face % 2 == 0 ? radius : length(face / 2) - radius, face % 2 == 0 ? 1 : -1, wall_[f].motion.reach(), &normal_[f]};
+  }
+  // The gap within which a grain touches a moving wall: round-off of a coordinate of the box.
+  double gap_tolerance(int axis) const { return 1e-12 * length(axis); }
+  // The displacement h into the box of the wall at `face` at production time t.
+  double displacement(int face, double t) const {
+    return moving(face) ? normal_[static_cast<std::size_t>(face)].integral(0.0, t) : 0.0;
   }
   // The unit normal of a face, from a grain touching it towards the wall.
   static Vector wall_normal(int face) {
@@ -152,23 +183,33 @@ class BoxBoundaries {
     k_hat[face / 2] = face % 2 == 0 ? -1.0 : 1.0;
     return k_hat;
   }
-  Vector wall_velocity(int face) const {
+  // The velocity of the wall at `face` at production time t: along itself, and normal to itself
+  // when it moves.
+  Vector wall_velocity(int face, double t) const {
+    const auto f = static_cast<std::size_t>(face);
     Vector v;
     for (int a = 0; a < D; ++a) v[a] = wall(face).velocity[static_cast<std::size_t>(a)];
+    if (drives_running_ && driven_[f]) v[wall_[f].along_axis] = along_[f].velocity(t);
+    if (moving(face)) v[face / 2] = (face % 2 == 0 ? 1.0 : -1.0) * normal_[f].velocity(t);
     return v;
   }
   // How far a grain of radius `radius` at coordinate `position` is into the walls of `axis`
-  // beyond `tolerance` (> 0: it is), 0 on an axis with images.
-  double wall_penetration(int axis, double position, double radius, double tolerance) const {
+  // beyond `tolerance` (> 0: it is) at production time t, 0 on an axis with images.
+  double wall_penetration(int axis, double position, double radius, double tolerance, double t) const {
     if (has_images(axis)) return 0.0;
     const double inside = radius - tolerance;
-    return std::max(inside - position, position - (length(axis) - inside));
+    return std::max(inside + displacement(2 * axis, t) - position,
+                    position - (length(axis) - inside - displacement(2 * axis + 1, t)));
   }
 
  private:
   std::array<AxisBoundary, D> kind_{};
   bool walled_ = false;  // some axis has walls
   std::array<WallParams, 6> wall_{};
+  // Per face: the tangential drive and the normal velocity dh/dt, as protocols of time.
+  std::array<ShearProtocol, 6> along_{}, normal_{};
+  std::array<bool, 6> driven_{}, moves_{};
+  bool drives_running_ = false;
   ShearFrame frame_;
   std::array<double, 3> length_{1.0, 1.0, 1.0};
 };

@@ -19,6 +19,13 @@ double ramp_excess(double x) {
 
 }  // namespace
 
+ShearHistory scaled(const ShearHistory& history, double factor) {
+  ShearHistory out = history;
+  for (ShearSchedulePoint& p : out.schedule) p.velocity *= factor;
+  if (out.oscillation) out.oscillation->amplitude *= factor;
+  return out;
+}
+
 ShearProtocol::ShearProtocol(double steady_velocity, const ShearHistory& history)
     : steady_(steady_velocity), history_(history) {}
 

@@ -40,6 +40,9 @@ struct ShearHistory {
   double tolerance = 1e-3;
 };
 
+// The same history with every velocity times `factor` (a wall driven at a share of U(t)).
+ShearHistory scaled(const ShearHistory& history, double factor);
+
 struct ShearSegment {
   double start = 0.0;
   double end = 0.0;       // +inf when U stays constant from `start` on
@@ -65,12 +68,12 @@ class ShearProtocol {
   std::int64_t segments_while_changing(std::int64_t cap) const;
   // The segment that contains t, found by chaining segments from 0 exactly as a run does.
   ShearSegment segment_containing(double t) const;
-
- private:
   // The next time after t at which U or its derivative jumps (+inf if none).
   double next_break(double t) const;
   // An upper bound of |dU/dt| over [t, next_break(t)).
   double slope_bound(double t) const;
+
+ private:
   double base_velocity(double t) const;
   double base_integral(double a, double b) const;
 

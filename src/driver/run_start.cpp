@@ -65,7 +65,7 @@ CellGrid run_cell_grid(const RunConfig& config) {
 RunStart run_start(const RunConfig& config) {
   // A frame of an earlier run carries its flow, so its images move with the protocol from the start.
   const bool sheared = config.initial_shear_profile || config.initial_from;
-  const double protocol_start = ShearProtocol(config.system.shear_velocity, config.system.shear_history).velocity(0.0);
+  const double protocol_start = image_protocol(config.system).velocity(0.0);
   RunStart start;
   start.clock.held_shear_velocity = sheared ? protocol_start : 0.0;
   if (config.initial_from) {

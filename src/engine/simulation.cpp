@@ -45,7 +45,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
       motion_(params.gravity),
-      protocol_(params.shear_velocity, params.shear_history) {
+      protocol_(image_protocol(params)) {
   load(state);
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
@@ -57,6 +57,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   collisions_ = clock.collisions;
   events_ = clock.events;
   protocol_running_ = clock.protocol_running;
+  boundaries_.set_drives_running(protocol_running_);
   if (protocol_running_) {
     // The segment a run that got here would be in: the chain of segments is fixed by the protocol.
     const ShearSegment segment = protocol_.segment_containing(clock.time);
@@ -146,7 +147,14 @@ void Simulation<D>::start_production(const SystemParams& production) {
   events_ = 0;
   for (auto& t : last_collision_) t = -kInf;
   protocol_running_ = true;
+  boundaries_.set_drives_running(true);
   enter_shear_segment(protocol_.segment_from(0.0));
+  // Walls that move normal to themselves start now: the hits predicted at rest no longer hold.
+  bool walls_move = false;
+  for (int face = 0; face < 2 * D; ++face) walls_move = walls_move || boundaries_.moving(face);
+  if (walls_move) {
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(params_.particles); ++i) predict(i);
+  }
 }
 
 template <int D>

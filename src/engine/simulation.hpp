@@ -334,7 +334,7 @@ class Simulation {
   // boundaries (what the engine applies).
   void set_walls(const std::array<WallParams, 6>& wall) {
     params_.wall = wall;
-    boundaries_.walls() = wall;
+    boundaries_.set_walls(wall);
   }
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;

@@ -68,8 +68,16 @@ std::map<std::string, double> surface_parameters(const SystemParams& p, int dime
     if (!p.walls[static_cast<std::size_t>(axis)]) continue;
     out[std::string("walls_") + "xyz"[axis]] = 1.0;
     for (int face = 2 * axis; face <= 2 * axis + 1; ++face) {
-      for (int a = 0; a < dimension; ++a) {
-        out["wall_" + std::to_string(face) + "_velocity_" + "xyz"[a]] = p.wall[static_cast<std::size_t>(face)].velocity[static_cast<std::size_t>(a)];
+      const WallParams& wall = p.wall[static_cast<std::size_t>(face)];
+      const std::string name = "wall_" + std::to_string(face);
+      for (int a = 0; a < dimension; ++a) out[name + "_velocity_" + "xyz"[a]] = wall.velocity[static_cast<std::size_t>(a)];
+      // Where a moving wall is follows from its drive and the clock: a resumed run must have the same.
+      if (!wall.motion.moves()) continue;
+      out[name + "_vibration_amplitude"] = wall.motion.amplitude;
+      out[name + "_vibration_frequency"] = wall.motion.frequency;
+      for (std::size_t k = 0; k < wall.motion.schedule.size(); ++k) {
+        out[name + "_schedule_time_" + std::to_string(k)] = wall.motion.schedule[k].time;
+        out[name + "_schedule_displacement_" + std::to_string(k)] = wall.motion.schedule[k].displacement;
       }
     }
   }
@@ -86,7 +94,9 @@ void check_surfaces_match(const StateArchive& archive, const std::string& prefix
       throw std::runtime_error("checkpoint was written with another " + name + " than the configuration gives");
     }
   }
-  for (const char* feature : {"inertia_factor", "walls_x", "walls_y", "walls_z", "gravity_x"}) {
+  for (const char* feature : {"inertia_factor", "walls_x", "walls_y", "walls_z", "gravity_x", "wall_0_vibration_amplitude",
+                              "wall_1_vibration_amplitude", "wall_2_vibration_amplitude", "wall_3_vibration_amplitude",
+                              "wall_4_vibration_amplitude", "wall_5_vibration_amplitude"}) {
     if (archive.contains(prefix + feature) && !expected.count(feature)) {
       throw std::runtime_error(std::string("checkpoint was written with ") + feature + ", which the configuration does not have");
     }
@@ -223,7 +233,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
       motion_(params.gravity),
-      protocol_(params.shear_velocity, params.shear_history) {
+      protocol_(image_protocol(params)) {
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
@@ -260,6 +270,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   check_restored_clocks();
   shear_rate_ = image_velocity() / params.length_y;
   protocol_running_ = archive.integer(prefix + "protocol_running") != 0;
+  boundaries_.set_drives_running(protocol_running_);
   actions_.schedule(TimedAction::kShearSegment, archive.scalar(prefix + "shear_segment_action"));
   schedule_realignment();
   const auto kinds = array_of_size<std::uint8_t>(archive, prefix + "event_kind", n);

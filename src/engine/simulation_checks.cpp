@@ -54,7 +54,7 @@ void Simulation<D>::check_invariants() const {
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", user_id(i), " has a non-finite state");
     for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
-      if (boundaries_.wall_penetration(a, r[a], radius_of(i), kDistanceTolerance * boundaries_.length(a)) > 0.0) {
+      if (boundaries_.wall_penetration(a, r[a], radius_of(i), kDistanceTolerance * boundaries_.length(a), time()) > 0.0) {
         fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
       }
     }
@@ -118,11 +118,14 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     return;
   }
   if (kind == EventKind::kNone) return;
-  if (is_wall_hit(kind)) {  // the grain must touch the wall
+  if (is_wall_hit(kind)) {  // the grain must touch the wall (or, moving walls, not have passed it)
     const int face = wall_face(kind);
     const int axis = face / 2;
-    const double wall = face % 2 == 0 ? 0.0 : boundaries_.length(axis);
-    if (std::abs(std::abs(r[axis] - wall) - radius_of(i)) > kDistanceTolerance * boundaries_.length(axis)) {
+    const double shift = boundaries_.displacement(face, time());
+    const double wall = face % 2 == 0 ? shift : boundaries_.length(axis) - shift;
+    const double gap = std::abs(r[axis] - wall) - radius_of(i);
+    const bool rechecked = boundaries_.moving(face) && gap > 0.0;  // a search that stopped short (moving_wall_hit.hpp)
+    if (!rechecked && std::abs(gap) > kDistanceTolerance * boundaries_.length(axis)) {
       fail("wall hit of particle ", user_id(i), " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
     }
     return;

@@ -166,8 +166,14 @@ template <int D>
 WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
   const Vector before = velocity_now(i);
-  // Re-validate as for pairs: a grain no longer moving into the wall is left alone.
-  if (dot(before, k_hat) <= 0.0) {
+  // Re-validate as for pairs: a grain no longer moving into the wall is left alone; at a moving
+  // wall, also one not touching it (a search that stopped short), by the test its prediction made.
+  const bool moving = boundaries_.moving(face);
+  const int axis = face / 2;
+  const double now = time();
+  const MovingPlane plane = boundaries_.moving_plane(face, radius_of(i));
+  const bool touching = !moving || moving_gap(plane, position_now(i)[axis], now) <= boundaries_.gap_tolerance(axis);
+  if (!touching || (moving ? moving_gap_rate(plane, before[axis], now) >= 0.0 : dot(before, k_hat) <= 0.0)) {
     WallHitPlan<D> stale;  // nothing to apply
     stale.particle = i;
     stale.face = face;
@@ -177,7 +183,7 @@ WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   // the same law as grains (the TC model holds at walls too).
   const CollisionLaw law = wall_law(face);
   ContactSide<D> grain = contact_side(i, before);
-  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face));
+  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face, now));
   const double energy_before = observers_.empty() ? 0.0 : grain.kinetic_energy();
   const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, law.restitution_of(grain, wall, k_hat, recent_contact(law, i, -1)));
   return {i, face, true, flight_through_now(i, grain.velocity), grain, outcome, before, energy_before};

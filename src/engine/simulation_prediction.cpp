@@ -60,7 +60,7 @@ typename Simulation<D>::Crossing Simulation<D>::next_crossing(const Flight& flig
     }
   }
   int face = -1;
-  boundaries_.earliest_wall_hit(flight, r, v, [&] { return radius_of(i); }, best, face);
+  boundaries_.earliest_wall_hit(flight, r, v, [&] { return radius_of(i); }, time(), best, face);
   if (face >= 0) kind = wall_hit(face);
   if (best == kInf) kind = EventKind::kNone;
   return {kind, best};

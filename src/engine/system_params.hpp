@@ -49,7 +49,8 @@ struct SystemParams {
   double length_y = 1.0;        // L_y (gradient direction)
   double restitution = 1.0;     // ẽ ∈ (0, 1], thesis eq (1.2)
   // U₀: the steady Lees–Edwards image velocity (0 for a periodic box).  With a shear history the
-  // image velocity U(t) follows ShearProtocol(shear_velocity, shear_history) in production.
+  // image velocity U(t) follows ShearProtocol(shear_velocity, shear_history) in production
+  // (image_protocol); between walls the history is the walls' (WallParams::along) and U₀ = 0.
   double shear_velocity = 0.0;
   // TC model (Luding & McNamara 1998): a collision is elastic if either partner collided less
   // than tc_duration ago.  0 switches it off.
@@ -74,6 +75,12 @@ struct SystemParams {
   bool has_walls() const { return walls[0] || walls[1] || walls[2]; }
   bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }
 };
+
+// The velocity U(t) of the Lees–Edwards images above the box: none in a walled box, whose walls
+// carry a shear themselves (WallParams::along holds their share of the same history).
+inline ShearProtocol image_protocol(const SystemParams& p) {
+  return p.has_walls() ? ShearProtocol() : ShearProtocol(p.shear_velocity, p.shear_history);
+}
 
 // The parameters of the thesis's elastic pre-run (§1.4.2): every collision elastic and smooth, with
 // grains and with walls (spins are kept but not exchanged; moving smooth walls do no work).

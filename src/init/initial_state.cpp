@@ -30,8 +30,9 @@ struct ShearProfile {
 ShearProfile shear_profile(const SystemParams& params, std::optional<double> profile_velocity, bool wall_profile) {
   if (!params.walls[1]) return {profile_velocity.value_or(params.shear_velocity), 0.0};
   if (!wall_profile) return {};
-  const double lower = params.wall[2].velocity[0];
-  const double upper = params.wall[3].velocity[0];
+  // The walls' velocities as production starts (a ramped drive starts from rest).
+  const double lower = ShearProtocol(params.wall[2].velocity[0], params.wall[2].along).velocity(0.0);
+  const double upper = ShearProtocol(params.wall[3].velocity[0], params.wall[3].along).velocity(0.0);
   return {upper - lower, 0.5 * (lower + upper)};
 }
 

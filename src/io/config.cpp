@@ -32,7 +32,7 @@ const ConfigSchema& schema() {
         "tangential_restitution", "inertia_factor", "friction"}},
       {"boundary",
        {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance", "wall_axes",
-        "wall_restitution", "wall_tangential_restitution"}},
+        "wall_restitution", "wall_tangential_restitution", "wall_motion"}},
       {"initial",
        {"temperature", "temperature_over_steady", "shear_profile", "from", "frame", "equilibrate", "placement",
         "rotational_temperature"}},

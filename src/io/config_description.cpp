@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace granule {
 
@@ -55,6 +56,27 @@ std::vector<std::string> describe_surfaces(const RunConfig& config) {
     lines.push_back(fmt::format("walls at {} = 0 (e_w = {}, β_w = {}, velocity {}) and {} = {} (e_w = {}, β_w = {}, velocity {})",
                                 name, lower.restitution, lower.tangential_restitution, vector_text(lower.velocity), name,
                                 lengths[axis], upper.restitution, upper.tangential_restitution, vector_text(upper.velocity)));
+  }
+  for (int face = 0; face < 2 * s.dimension; ++face) {
+    const WallParams& wall = s.wall[static_cast<std::size_t>(face)];
+    const std::string name = fmt::format("wall {}{}", "xyz"[face / 2], face % 2);
+    if (!ShearProtocol(wall.velocity[static_cast<std::size_t>(wall.along_axis)], wall.along).constant()) {
+      lines.push_back(fmt::format("{} slides at {}U(t)/2, U(t) the shear protocol's", name, face % 2 == 0 ? "−" : "+"));
+    }
+    const WallMotion& m = wall.motion;
+    if (m.amplitude > 0.0) {
+      const double peak = std::pow(2.0 * std::numbers::pi * m.frequency, 2) * m.amplitude;
+      const double g = std::abs(s.gravity[static_cast<std::size_t>(face / 2)]);
+      lines.push_back(fmt::format("{} vibrates into the box: h = A (1 − cos 2πft), A = {}, f = {}: peak speed {:.4g}, peak "
+                                  "acceleration {:.4g}{}", name, m.amplitude, m.frequency,
+                                  2.0 * std::numbers::pi * m.frequency * m.amplitude, peak,
+                                  g > 0.0 ? fmt::format(" (Γ = {:.3g} g)", peak / g) : std::string{}));
+    }
+    if (!m.schedule.empty()) {
+      std::string points;
+      for (const WallPositionPoint& p : m.schedule) points += fmt::format("{}({}, {})", points.empty() ? "" : ", ", p.time, p.displacement);
+      lines.push_back(fmt::format("{} moves into the box through (t, h) = {}{}", name, points, m.amplitude > 0.0 ? ", plus the vibration" : ""));
+    }
   }
   if (s.has_gravity()) lines.push_back(fmt::format("gravity g = {}", vector_text(s.gravity)));
   return lines;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "io/config_wall_motion.hpp"
 #include "io/config_walls.hpp"
 #include "io/input_ranges.hpp"
 #include "theory/steady_shear.hpp"
@@ -27,23 +28,24 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
   const std::string speeds = "0 or |U| in " + kSpeedRange.text();
   // Any finite U₀ here: its range depends on T_i, checked in resolve_speeds.
   const auto u0 = in.number_if("boundary.shear_velocity", [](double) { return true; }, speeds);
-  if (!c.lees_edwards) {
-    // Walls on y carry a steady shear themselves (moving at ±U/2); the images stay at rest.
-    const bool wall_driven = c.system.walls[1];
-    if (u0.value_or(0.0) != 0.0 && !wall_driven) {
+  // Walls on y carry the shear themselves (moving at ±U(t)/2); the images stay at rest.
+  const bool wall_driven = !c.lees_edwards && c.system.walls[1];
+  if (!c.lees_edwards && !wall_driven) {
+    if (u0.value_or(0.0) != 0.0) {
       throw ConfigError{fmt::format("boundary.shear_velocity = {} requires boundary.kind = \"lees-edwards\", or \"walls\" "
                                     "with \"y\" in boundary.wall_axes (a periodic direction has no shear; allowed: 0)", *u0)};
     }
-    const std::string why = c.system.has_walls() ? "walls move at a constant ±U/2: time-dependent wall drives (ramps, "
-                                                   "schedules, oscillations) are not supported yet"
-                                                 : "a periodic box has no shear";
     for (const char* key : kShearKeys) {
       if (in.has(key) && std::string(key) != "boundary.shear_velocity") {
-        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\" ({})", key, why)};
+        throw ConfigError{fmt::format("{} requires boundary.kind = \"lees-edwards\", or \"walls\" with \"y\" in "
+                                      "boundary.wall_axes (a periodic direction has no shear)", key)};
       }
     }
-    if (wall_driven) set_wall_shear(c.system, u0.value_or(0.0));
     return 0.0;
+  }
+  if (wall_driven && in.has("boundary.shear_tolerance")) {
+    throw ConfigError{"boundary.shear_tolerance requires boundary.kind = \"lees-edwards\": the engine follows the images' "
+                      "U(t) in constant segments, but walls move at exactly ±U(t)/2"};
   }
   for (const auto& [t, u] : in.number_pairs("boundary.shear_schedule", "[t, U]")) {
     if (!kTimes.contains(t) || !speed_allowed(u) || (!h.schedule.empty() && t < h.schedule.back().time)) {
@@ -79,7 +81,12 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
   h.tolerance = in.number("boundary.shear_tolerance", kTolerances,
                           " (largest |U(t) − Ū| on a constant-velocity segment, relative to the largest |U|)")
                     .value_or(1e-3);
-  return h.schedule.empty() ? u0.value_or(0.0) : h.schedule.back().velocity;
+  const double steady = h.schedule.empty() ? u0.value_or(0.0) : h.schedule.back().velocity;
+  if (!wall_driven) return steady;
+  set_wall_shear(c.system, steady);
+  c.system.wall[2].along = scaled(h, -0.5);
+  c.system.wall[3].along = scaled(h, 0.5);
+  return 0.0;
 }
 
 }  // namespace
@@ -89,6 +96,7 @@ void resolve_speeds(const ConfigReader& in, RunConfig& c) {
   const std::string kind = in.text("boundary.kind", {"periodic", "lees-edwards", "walls"}).value_or("periodic");
   c.lees_edwards = kind == "lees-edwards";
   resolve_walls(in, kind == "walls", c);
+  resolve_wall_motion(in, kind == "walls", c);
   s.shear_velocity = resolve_protocol(in, c);
   c.initial_shear_profile = in.boolean("initial.shear_profile").value_or(true);
 
@@ -130,7 +138,7 @@ void resolve_speeds(const ConfigReader& in, RunConfig& c) {
 std::string speeds_to_toml(const RunConfig& c) {
   const SystemParams& s = c.system;
   const ShearHistory& h = s.shear_history;
-  std::string out = fmt::format("[boundary]\nkind = \"{}\"\n", boundary_kind_name(c)) + walls_to_toml(c);
+  std::string out = fmt::format("[boundary]\nkind = \"{}\"\n", boundary_kind_name(c)) + walls_to_toml(c) + wall_motion_to_toml(c);
   if (h.schedule.empty()) {
     out += fmt::format("shear_velocity = {:.17g}\n", s.walls[1] ? wall_shear_velocity(s) : s.shear_velocity);
   } else {

@@ -22,7 +22,9 @@ inline double first_exit_time(double a, double b, double c) {
     return tau > 0.0 ? tau : 0.0;
   }
   const double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0) return a > 0.0 ? 0.0 : kNever;  // always outside / always inside
+  // Always outside / always inside; a < 0 with a double root only touches the edge (a grain at the
+  // apex of its flight exactly on a face) and never leaves.
+  if (disc < 0.0 || (disc == 0.0 && a < 0.0)) return a > 0.0 ? 0.0 : kNever;
   // Numerically stable roots q/a and c/q.
   const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   double r1 = q / a;

@@ -16,8 +16,11 @@ CASES = {
                            ["boundary.wall_restitution = 0", "(0, 1]"]),
     "inertia factor of smooth grains": (["--set", "system.inertia_factor=0.4"],
                                         ["system.inertia_factor", "system.tangential_restitution"]),
-    "ramped walls": (["--set", 'boundary.kind="walls"', "--set", "boundary.shear_velocity=10", "--set",
-                      "boundary.shear_ramp_time=1"], ["boundary.shear_ramp_time", "not supported yet"]),
+    "segmented walls": (["--set", 'boundary.kind="walls"', "--set", "boundary.shear_velocity=10", "--set",
+                         "boundary.shear_tolerance=0.01"], ["boundary.shear_tolerance", "exactly ±U(t)/2"]),
+    "wall moving beyond the box": (["--set", 'boundary.kind="walls"', "--set",
+                                    'boundary.wall_motion={ wall = "y0", amplitude = 1e3, frequency = 1 }'],
+                                   ["boundary.wall_motion.amplitude", "1000"]),
 }
 
 for name, (overrides, fragments) in CASES.items():

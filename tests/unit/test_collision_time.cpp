@@ -74,6 +74,10 @@ TEST(CrossingTime, ParabolaLeavesOnTheUpwardRoot) {
   EXPECT_EQ(first_exit_time(-0.09, -1.6, 0.0), kNever);
   // Same, but moving out: leaves now.
   EXPECT_EQ(first_exit_time(-0.09, 1.6, 1e-17), 0.0);
+  // At the apex of its flight exactly on the edge (g = −τ², a double root at 0): it only touches the
+  // edge, it never leaves (a grain at rest on a cell face under gravity swapped cells forever).
+  EXPECT_EQ(first_exit_time(-0.5, 0.0, 0.0), kNever);
+  EXPECT_EQ(first_exit_time(-0.5, -0.0, -0.0), kNever);
   // Upward parabola from inside: leaves at the larger root √2.
   EXPECT_NEAR(first_exit_time(1.0, 0.0, -2.0), std::sqrt(2.0), 1e-14);
 }

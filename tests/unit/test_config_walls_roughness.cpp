@@ -106,14 +106,61 @@ TEST(ConfigWalls, BadWallKeysAreRefusedByNameAndRange) {
                  {"boundary.wall_axes", "L_y = 0.005", "σ = 0.01"});
 }
 
-TEST(ConfigWalls, OnlyYWallsShearAndOnlySteadily) {
+TEST(ConfigWalls, OnlyYWallsShear) {
   expect_refused({kWalls, "boundary.wall_axes=[\"x\"]", "boundary.shear_velocity=1"},
                  {"boundary.shear_velocity = 1", "\"y\" in boundary.wall_axes"});
   expect_refused({"boundary.shear_velocity=1"}, {"boundary.shear_velocity = 1", "lees-edwards", "allowed: 0"});
-  for (const std::string key : {"boundary.shear_ramp_time=1", "boundary.shear_schedule=[[0, 1], [1, 2]]",
-                                "boundary.shear_oscillation={ amplitude = 1, period = 1 }", "boundary.shear_tolerance=0.01"}) {
-    expect_refused({kWalls, "boundary.shear_velocity=1", key}, {key.substr(0, key.find('=')), "not supported yet"});
+  expect_refused({kWalls, "boundary.wall_axes=[\"x\"]", "boundary.shear_ramp_time=1"},
+                 {"boundary.shear_ramp_time", "\"y\" in boundary.wall_axes"});
+  // Walls follow U(t) exactly, not in segments: no tolerance to set.
+  expect_refused({kWalls, "boundary.shear_velocity=1", "boundary.shear_tolerance=0.01"},
+                 {"boundary.shear_tolerance", "exactly ±U(t)/2"});
+}
+
+// The y walls follow the Lees–Edwards drives of Chapter 4 at ∓½ U(t), the images rest.
+TEST(ConfigWalls, WallDrivesTakeTheShearProtocolsAtHalfTheirVelocity) {
+  const RunConfig ramp = accepted({kWalls, "boundary.shear_velocity=2", "boundary.shear_ramp_time=0.5"});
+  EXPECT_EQ(ramp.system.shear_velocity, 0.0);
+  for (const int face : {2, 3}) {
+    const WallParams& w = ramp.system.wall[face];
+    const ShearProtocol drive(w.velocity[0], w.along);
+    const double half = face == 2 ? -1.0 : 1.0;
+    EXPECT_EQ(drive.velocity(0.0), 0.0);
+    EXPECT_NEAR(drive.velocity(0.5), half * (1.0 - std::exp(-1.0)), 1e-15);
   }
+  const RunConfig schedule = accepted({kWalls, "boundary.shear_schedule=[[0, 1], [1, 3]]"});
+  EXPECT_EQ(wall_shear_velocity(schedule.system), 3.0);
+  EXPECT_DOUBLE_EQ(ShearProtocol(schedule.system.wall[3].velocity[0], schedule.system.wall[3].along).velocity(0.5), 1.0);
+  EXPECT_DOUBLE_EQ(ShearProtocol(schedule.system.wall[2].velocity[0], schedule.system.wall[2].along).velocity(0.5), -1.0);
+  const RunConfig kick = accepted({kWalls, "boundary.shear_velocity=1", "boundary.shear_oscillation={ amplitude = 0.4, period = 2 }"});
+  EXPECT_DOUBLE_EQ(ShearProtocol(kick.system.wall[3].velocity[0], kick.system.wall[3].along).velocity(0.5), 0.5 + 0.2);
+  // The echo reads back to the same walls.
+  const ConfigResult again = parse_config(to_toml(kick), {});
+  ASSERT_TRUE(again.config) << again.error;
+  EXPECT_EQ(again.config->system.wall[2].along.oscillation->amplitude, -0.2);
+}
+
+TEST(ConfigWalls, AWallMovesNormalToItselfByAVibrationOrASchedule) {
+  const RunConfig c = accepted({kWalls, "system.gravity=[0, -1]", "system.box=[8.0, 8.0]",
+                                "boundary.wall_motion={ wall = \"y0\", amplitude = 0.5, frequency = 2, schedule = [[0, 0], [1, 3]] }"});
+  const WallMotion& m = c.system.wall[2].motion;
+  EXPECT_EQ(m.amplitude, 0.5);
+  EXPECT_EQ(m.frequency, 2.0);
+  ASSERT_EQ(m.schedule.size(), 2u);
+  EXPECT_EQ(m.reach(), 4.0);
+  EXPECT_FALSE(c.system.wall[3].motion.moves());
+  const ConfigResult again = parse_config(to_toml(c), {});
+  ASSERT_TRUE(again.config) << again.error;
+  EXPECT_EQ(again.config->system.wall[2].motion.schedule.back().displacement, 3.0);
+  const std::string key = "boundary.wall_motion";
+  expect_refused({key + "={ wall = \"y0\", amplitude = 1, frequency = 1 }"}, {key, "requires boundary.kind = \"walls\""});
+  expect_refused({kWalls, key + "={ wall = \"x0\", amplitude = 1, frequency = 1 }"}, {key + ".wall", "y0", "y1"});
+  expect_refused({kWalls, key + "={ wall = \"y0\", amplitude = 1 }"}, {key + ".amplitude", "frequency"});
+  expect_refused({kWalls, key + "={ wall = \"y0\", frequency = 1 }"}, {key + ".frequency", "amplitude"});
+  expect_refused({kWalls, key + "={ wall = \"y0\" }"}, {key, "amplitude and frequency, or a schedule"});
+  expect_refused({kWalls, key + "={ wall = \"y1\", schedule = [[0, 1]] }"}, {key + ".schedule point [0, 1]", "starting from h = 0"});
+  expect_refused({kWalls, key + "={ wall = \"y1\", schedule = [[0, 0], [0, 1]] }"}, {"increasing order"});
+  expect_refused({kWalls, key + "={ wall = \"y0\", amplitude = 1, frequency = 1, speed = 2 }"}, {key, "speed"});
 }
 
 TEST(ConfigGravity, FiniteVectorOfTheDimension) {

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "validation/simulation_setup.hpp"
+#include "validation/same_engine.hpp"
 
 namespace granule {
 namespace {
@@ -35,21 +36,6 @@ class ExactContinuation : public ::testing::TestWithParam<bool> {
     return sim;
   }
 };
-
-// The whole engine, bit for bit: two runs are the same run iff their checkpoints are equal.
-void expect_same_engine(const Simulation<2>& a, const Simulation<2>& b) {
-  StateArchive sa, sb;
-  a.save(sa, "");
-  b.save(sb, "");
-  ASSERT_EQ(sa.arrays().size(), sb.arrays().size());
-  for (const auto& [name, values] : sa.arrays()) {
-    ASSERT_TRUE(sb.contains(name)) << name;
-    EXPECT_TRUE(values == sb.arrays().at(name)) << "engine entry " << name << " differs";
-  }
-  EXPECT_EQ(a.time(), b.time());
-  EXPECT_EQ(a.collisions(), b.collisions());
-  EXPECT_EQ(a.events(), b.events());
-}
 
 struct Counter final : EventObserver<2> {
   std::int64_t collisions = 0, crossings = 0;

@@ -1,0 +1,236 @@
+// Walls that move, against results computed here independently of the engine:
+//  • a grain on a sinusoidally vibrated floor under gravity: each bounce of the engine is where an
+//    independent root search (dense sampling of the gap, then bisection) puts it, starting from the
+//    engine's previous bounce, and leaves at u − e_w (v − u), u the floor's velocity then (the
+//    bounce map of the vibrated bed, free of the chaos that amplifies round-off over many bounces);
+//  • a vibrated inelastic gas: the energy changes by exactly the work the floor did plus what the
+//    collisions took, the momentum by the walls' impulses plus gravity's, to round-off, and no
+//    grain is ever in the moving floor (the engine's invariants at every stop);
+//  • a floor raised by a schedule several cells into a gas (a piston): the same, with the floor's
+//    exact position checked;
+//  • walls sliding at ±U(t)/2 under the ramp and oscillation drives of Chapter 4: a grain leaving a
+//    perfectly rough wall has v_x = 2 w(t) − v_x, w from the closed form of U(t);
+//  • a run with moving walls continues bit for bit from its checkpoint.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "validation/same_engine.hpp"
+#include "validation/surfaces_setup.hpp"
+
+namespace granule {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::int64_t kNoCollisionLimit = std::numeric_limits<std::int64_t>::max();
+
+// The floor's displacement h = A (1 − cos 2πft) and velocity, written out here.
+struct Vibration {
+  double amplitude, frequency;
+  double h(double t) const { return amplitude * (1.0 - std::cos(2.0 * std::numbers::pi * frequency * t)); }
+  double u(double t) const {
+    return 2.0 * std::numbers::pi * frequency * amplitude * std::sin(2.0 * std::numbers::pi * frequency * t);
+  }
+};
+
+// The first time after t0 at which a grain leaving the floor at height y0 with velocity v0 (in
+// gravity −g) meets it again: the gap sampled every `step` until it is negative, then bisected.
+double next_landing(const Vibration& floor, double radius, double g, double t0, double y0, double v0, double step) {
+  const auto gap = [&](double t) {
+    const double s = t - t0;
+    return y0 + v0 * s - 0.5 * g * s * s - radius - floor.h(t);
+  };
+  double a = t0 + 1e-9;
+  double b = a;
+  while (gap(b) >= 0.0) {
+    a = b;
+    b += step;
+  }
+  for (int k = 0; k < 200 && b - a > 1e-15 * b; ++k) {
+    const double m = 0.5 * (a + b);
+    (gap(m) >= 0.0 ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+// One grain at the middle of the unit box's x (and z), at height y with velocity (v_x, v_y),
+// its walls' drives started (production from t = 0), watched by `log`.
+template <int D>
+Simulation<D> driven_grain(const SystemParams& p, double y, std::array<double, 2> velocity, WallLog<D>& log) {
+  Vec<D> r0, v0;
+  for (int a = 0; a < D; ++a) r0[a] = 0.5;
+  r0[1] = y;
+  v0[0] = velocity[0];
+  v0[1] = velocity[1];
+  Simulation<D> sim = single_grain<D>(p, r0, v0);
+  sim.start_production(p);
+  sim.add_observer(&log);
+  return sim;
+}
+
+template <int D>
+void check_bounce_map() {
+  SystemParams p = one_grain_box<D>(0.02, 1.0);
+  p.renumber_every = 0.0;  // one grain in a fine grid: nothing to gain
+  const double e_w = 0.85, g = 1.0;
+  const Vibration floor{0.03, 1.3};  // Γ = (2πf)² A / g ≈ 2: the grain is thrown every cycle or two
+  add_walls(p, 1, e_w, -1.0);
+  p.gravity[1] = -g;
+  p.wall[2].motion = {floor.amplitude, floor.frequency, {}};
+  const double y_start = 0.4, vx = 0.07;
+  WallLog<D> log;
+  Simulation<D> sim = driven_grain<D>(p, y_start, {vx, 0.0}, log);
+  sim.run(40.0, kNoCollisionLimit);
+  const double radius = 0.5 * p.diameter;
+  ASSERT_GE(log.hits.size(), 30u);
+  double t0 = 0.0, y0 = y_start, u0 = 0.0;
+  const double step = 1e-4 / floor.frequency;
+  for (std::size_t k = 0; k < log.hits.size(); ++k) {
+    const WallCollisionRecord<D>& hit = log.hits[k];
+    ASSERT_EQ(hit.axis * 2 + hit.side, 2) << "bounce " << k;
+    const double t = next_landing(floor, radius, g, t0, y0, u0, step);
+    EXPECT_NEAR(hit.time, t, 1e-9) << "bounce " << k;
+    EXPECT_NEAR(hit.position[1], radius + floor.h(hit.time), 1e-11) << "bounce " << k;
+    EXPECT_NEAR(hit.velocity_before[1], u0 - g * (hit.time - t0), 1e-9) << "bounce " << k;
+    const double u = floor.u(hit.time);
+    EXPECT_NEAR(hit.velocity_after[1], u - e_w * (hit.velocity_before[1] - u), 1e-12) << "bounce " << k;
+    EXPECT_NEAR(hit.velocity_after[0], vx, 1e-15) << "a smooth floor leaves v_x alone";
+    t0 = hit.time;
+    y0 = hit.position[1];
+    u0 = hit.velocity_after[1];
+  }
+  sim.check_invariants();
+  std::printf("[%dD] %zu bounces on the vibrated floor, each where the independent search puts it\n", D, log.hits.size());
+}
+
+TEST(MovingWalls, ADiskOnAVibratedFloorBouncesAsTheIndependentBounceMapSays) { check_bounce_map<2>(); }
+TEST(MovingWalls, ASphereOnAVibratedFloorBouncesAsTheIndependentBounceMapSays) { check_bounce_map<3>(); }
+
+// Σ m v over the grains along `axis`.
+double momentum(const ParticleState& s, int axis) {
+  double sum = 0.0;
+  for (double v : s.velocity(axis)) sum += v;
+  return sum;
+}
+
+// An inelastic gas in gravity on a moving floor: the budgets close to round-off, the invariants hold
+// at every stop (no grain in the floor, wherever it is).
+template <int D>
+void check_driven_gas_budgets(const WallMotion& motion, int chunks, double collisions_per_chunk) {
+  std::array<int, D> per_axis;
+  per_axis.fill(D == 2 ? 16 : 6);
+  per_axis[1] = D == 2 ? 12 : 8;
+  std::array<double, D> box;
+  box.fill(1.0);
+  box[1] = 2.0;
+  SystemParams p = surfaces_system<D>(per_axis, box, D == 2 ? 0.03 : 0.07, 0.9);
+  add_walls(p, 1, 0.9, -1.0);
+  p.gravity[1] = -1.0;
+  p.tc_duration = 1e-5;
+  p.wall[2].motion = motion;
+  const ParticleState initial = lattice_gas<D>(p, per_axis, 0.2, 21);
+  Simulation<D> sim(p, surfaces_grid<D>(p), initial);
+  sim.start_production(p);
+  WallLog<D> log;
+  sim.add_observer(&log);
+  const double e0 = total_energy(p, initial);
+  const double radius = 0.5 * p.diameter;
+  for (int chunk = 1; chunk <= chunks; ++chunk) {
+    sim.run(kInf, static_cast<std::int64_t>(chunk * collisions_per_chunk * static_cast<double>(p.particles)));
+    sim.check_invariants();
+  }
+  const ParticleState s = sim.state();
+  const double t = sim.time();
+  const double h = motion.velocity().integral(0.0, t);
+  double lowest = kInf;
+  for (double y : s.y) lowest = std::min(lowest, y - radius - h);
+  EXPECT_GE(lowest, -1e-12) << "a grain below the floor";
+  EXPECT_NEAR(total_energy(p, s) - e0, log.wall_energy + log.collision_energy, 1e-12 * log.magnitude);
+  const auto n = static_cast<double>(p.particles);
+  for (int a = 0; a < D; ++a) {
+    const double gravity_impulse = n * p.gravity[static_cast<std::size_t>(a)] * t;
+    EXPECT_NEAR(momentum(s, a) - momentum(initial, a), gravity_impulse - log.impulse_on_walls[a], 1e-10 * n) << "axis " << a;
+  }
+  EXPECT_GT(log.wall_energy, 0.0) << "the moving floor must do work on the gas";
+  std::printf("[%dD] t = %.3g, h = %.4g: floor work %.4g, collisional loss %.4g, %zu wall hits, lowest gap %.2e\n", D, t,
+              h, log.wall_energy, -log.collision_energy, log.hits.size(), lowest);
+}
+
+TEST(MovingWalls, AVibratedGasOfDisksKeepsExactBudgetsAndNeverEntersTheFloor) {
+  check_driven_gas_budgets<2>({0.02, 3.0, {}}, 4, 10.0);
+}
+TEST(MovingWalls, AVibratedGasOfSpheresKeepsExactBudgetsAndNeverEntersTheFloor) {
+  check_driven_gas_budgets<3>({0.04, 2.0, {}}, 3, 10.0);
+}
+// A piston: the floor rises 0.6 (several cells) in one time unit and stays there.
+TEST(MovingWalls, AFloorRaisedByASchedulePushesTheGasUpWithExactBudgets) {
+  check_driven_gas_budgets<2>({0.0, 0.0, {{0.0, 0.0}, {1.0, 0.6}}}, 4, 8.0);
+}
+
+// U(t) of the drives, written out here: a ramp U₀ (1 − e^{−t/τ}) and U₀ + a sin(2πt/P).
+template <int D>
+void check_tangential_drive(const ShearHistory& history, double steady, const std::function<double(double)>& wall_speed) {
+  SystemParams p = one_grain_box<D>(0.02, 1.0);
+  p.renumber_every = 0.0;
+  add_walls(p, 1, 1.0, 1.0);  // elastic and perfectly rough: a smooth grain leaves with 2 w − v_x
+  p.wall[2].velocity[0] = -0.5 * steady;
+  p.wall[3].velocity[0] = 0.5 * steady;
+  p.wall[2].along = scaled(history, -0.5);
+  p.wall[3].along = scaled(history, 0.5);
+  WallLog<D> log;
+  Simulation<D> sim = driven_grain<D>(p, 0.5, {0.2, 3.1}, log);
+  sim.run(12.0, kNoCollisionLimit);
+  ASSERT_GE(log.hits.size(), 30u);
+  for (const WallCollisionRecord<D>& hit : log.hits) {
+    const double w = (hit.side == 0 ? -0.5 : 0.5) * wall_speed(hit.time);
+    EXPECT_NEAR(hit.velocity_after[0], 2.0 * w - hit.velocity_before[0], 1e-13) << "t = " << hit.time;
+    EXPECT_NEAR(std::abs(hit.velocity_after[1]), 3.1, 1e-13);
+  }
+}
+
+TEST(MovingWalls, WallsRampedAsInChapter4MoveAtHalfTheRampsVelocity) {
+  ShearHistory ramp;
+  ramp.ramp_time = 1.5;
+  check_tangential_drive<2>(ramp, 2.0, [](double t) { return 2.0 * (1.0 - std::exp(-t / 1.5)); });
+}
+TEST(MovingWalls, WallsOscillatedAsInChapter4MoveAtHalfTheOscillatingVelocity) {
+  ShearHistory kick;
+  kick.oscillation = ShearOscillation{0.7, 0.8, 1.0, 3.0};
+  check_tangential_drive<3>(kick, 2.0, [](double t) {
+    return 2.0 + (t >= 1.0 && t <= 3.4 ? 0.7 * std::sin(2.0 * std::numbers::pi * (t - 1.0) / 0.8) : 0.0);
+  });
+}
+
+// A run with a vibrated floor and oscillating side walls continues from its checkpoint bit for bit
+// (≥ 30 collisions per grain after the save, past several re-bases).
+TEST(MovingWalls, AVibratedRunContinuesFromItsCheckpointBitForBit) {
+  const std::array<int, 2> per_axis{16, 12};
+  SystemParams p = surfaces_system<2>(per_axis, {1.0, 2.0}, 0.03, 0.9);
+  add_walls(p, 1, 0.9, 0.3);
+  p.gravity[1] = -1.0;
+  p.tc_duration = 1e-5;
+  p.wall[2].motion = {0.02, 3.0, {}};
+  p.wall[3].velocity[0] = 0.5;
+  p.wall[3].along.oscillation = ShearOscillation{0.2, 0.5, 0.0, 100.0};
+  const CellGrid grid = surfaces_grid<2>(p);
+  Simulation<2> straight(p, grid, lattice_gas<2>(p, per_axis, 0.2, 17));
+  straight.start_production(p);
+  straight.run(kInf, 10 * p.particles);
+  StateArchive saved;
+  straight.save(saved, "");
+  Simulation<2> restored(p, grid, saved, "");
+  straight.run(kInf, 45 * p.particles);
+  restored.run(kInf, 45 * p.particles);
+  expect_same_engine(straight, restored);
+  // A configuration whose floor vibrates otherwise cannot take the checkpoint over.
+  SystemParams other = p;
+  other.wall[2].motion.frequency = 2.0;
+  EXPECT_THROW(Simulation<2>(other, grid, saved, ""), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace granule
