@@ -5,8 +5,9 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <memory>
-#include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
