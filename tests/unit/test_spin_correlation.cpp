@@ -21,15 +21,15 @@ PairImages box_of(double lx, double ly, double offset = 0.0, double lz = 1.0) {
   return images;
 }
 
-// An n × n square lattice of spacing σ whose spins alternate ±1 around `mean` (a mean spin such as
-// the −γ/2 of a shear flow, which the correlation removes).
+// An n × n square lattice of spacing σ whose spins alternate ±2 around `mean` (a mean spin such as
+// the −γ/2 of a shear flow, which the correlation removes; a variance of 4, which it divides out).
 ParticleState checkerboard(int n, double mean) {
   ParticleState s;
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       s.x.push_back((i + 0.5) * kSigma);
       s.y.push_back((j + 0.5) * kSigma);
-      s.wz.push_back(mean + ((i + j) % 2 == 0 ? 1.0 : -1.0));
+      s.wz.push_back(mean + ((i + j) % 2 == 0 ? 2.0 : -2.0));
     }
   }
   s.vx.assign(s.x.size(), 0.0);
@@ -41,7 +41,7 @@ TEST(SpinCorrelation, CheckerboardOfMeshingGearsIsMinusOneAtContact) {
   const ParticleState s = checkerboard(10, -3.5);
   const SpinPairSums sums = spin_pair_sums(s, box_of(10.0, 10.0), kSigma, {});
   EXPECT_NEAR(sums.mean_spin[2], -3.5, 1e-12);
-  EXPECT_NEAR(sums.spin_variance, 1.0, 1e-12);
+  EXPECT_NEAR(sums.spin_variance, 4.0, 1e-12);
   // Every site has 4 nearest neighbours (the lattice is periodic): 200 pairs, half along each axis.
   EXPECT_EQ(sums.contact_pairs, 200.0);
   EXPECT_NEAR(sums.contact_correlation(), -1.0, 1e-12);
