@@ -16,10 +16,10 @@ trajectory `granule run` follows for the same configuration and seed, bit for bi
 from pathlib import Path
 
 from granule import _granule
-from granule._granule import ConfigError, Simulation, __version__, cell_fields, spectra, theory
+from granule._granule import ConfigError, Simulation, __version__, cell_fields, spectra, spin_correlation, theory
 from granule.gsd_export import write_gsd
 
-__all__ = ["ConfigError", "Simulation", "cell_fields", "spectra", "theory", "run_directory", "write_gsd", "__version__"]
+__all__ = ["ConfigError", "Simulation", "cell_fields", "spectra", "spin_correlation", "theory", "run_directory", "write_gsd", "__version__"]
 
 
 def run_directory(config, out, overrides=()):

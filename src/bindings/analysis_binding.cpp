@@ -1,7 +1,8 @@
 // The analyses of saved configurations as functions on NumPy arrays:
-// coarse-grained cell fields (analysis/cell_fields.hpp, thesis §1.4.3) and
-// Fourier spectra of mass and momentum (spectra/, thesis §2.2 and §3.2.1), the
-// computations behind `granule analyze fields|spectra`.
+// coarse-grained cell fields (analysis/cell_fields.hpp, thesis §1.4.3),
+// Fourier spectra of mass and momentum (spectra/, thesis §2.2 and §3.2.1) and the
+// spin correlation of neighbouring rough grains (analysis/spin_correlation.hpp, Fig C.4), the
+// computations behind `granule analyze fields|spectra|spins`.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -9,6 +10,7 @@
 #include <stdexcept>
 
 #include "analysis/cell_fields.hpp"
+#include "analysis/spin_correlation.hpp"
 #include "driver/run_beginnings.hpp"
 #include "bindings/bindings.hpp"
 #include "bindings/input_checks.hpp"
@@ -187,6 +189,58 @@ py::dict power_spectra(const py::object& positions, const py::object& velocities
   return out;
 }
 
+py::dict spin_correlation(const py::object& positions, const py::object& spins, const py::object& box, double diameter,
+                          const py::object& diameters, double shear_offset, const py::object& walls, double max_distance,
+                          int bins, double contact_shell) {
+  // The positions are checked as cell_fields checks them; the velocities are not used.
+  const ConfigurationArrays arrays = configuration_arrays(positions, positions, py::none());
+  const int d = arrays.dimension;
+  const Box lengths = box_argument(box, d);
+  checked(shear_offset, NumberRange{0.0, lengths.length_x}, "shear_offset");
+  checked(diameter, NumberRange{0.0, kUnbounded, true, true}, "diameter");
+  driver::require_memory(static_cast<double>(arrays.particles) * kAnalysisBytesPerParticle,
+                         fmt::format("spin_correlation of N = {}", arrays.particles));
+  ParticleState state = particle_state(arrays, lengths);
+  std::vector<std::vector<double>> w = particle_columns(spins, "spins", arrays.particles, d == 3 ? 3 : 1, false);
+  for (int k = 0; k < state.spin_components(); ++k) state.spin(k) = std::move(w[static_cast<std::size_t>(k)]);
+  if (!diameters.is_none()) {
+    state.diameter = std::move(particle_columns(diameters, "diameters", arrays.particles, 1, true)[0]);
+    state.mass.assign(arrays.particles, 1.0);
+  }
+  PairImages images;
+  images.length = {lengths.length_x, lengths.length_y, lengths.length_z};
+  images.shear_offset = shear_offset;
+  if (!walls.is_none()) {
+    const auto axes = walls.cast<std::vector<bool>>();
+    if (static_cast<int>(axes.size()) != d) throw py::value_error(fmt::format("walls must hold {} booleans, one per axis", d));
+    for (int a = 0; a < d; ++a) images.walls[static_cast<std::size_t>(a)] = axes[static_cast<std::size_t>(a)];
+    if (images.walls[1]) images.shear_offset = 0.0;  // y walls replace the sheared images
+  }
+  SpinCorrelationSettings settings;
+  settings.max_distance = max_distance;
+  settings.bins = bins;
+  settings.contact_shell = contact_shell;
+  const SpinPairSums sums = spin_pair_sums(state, images, diameter, settings);  // std::invalid_argument → ValueError
+  py::dict out;
+  const std::vector<double> edges = spin_correlation_edges(settings);
+  std::vector<double> centres(static_cast<std::size_t>(bins));
+  for (std::size_t k = 0; k < centres.size(); ++k) centres[k] = 0.5 * (edges[k] + edges[k + 1]);
+  out["r_edges"] = read_only_vector(edges);
+  out["r"] = read_only_vector(centres);
+  const char* suffixes[kPairDirections] = {"", "_flow", "_gradient"};
+  for (std::size_t direction = 0; direction < kPairDirections; ++direction) {
+    std::vector<double> c(centres.size());
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = sums.correlation(static_cast<PairDirection>(direction), k);
+    out[py::str(std::string("C") + suffixes[direction])] = read_only_vector(c);
+    out[py::str(std::string("pairs") + suffixes[direction])] = read_only_vector(sums.pairs[direction]);
+  }
+  out["C_contact"] = sums.contact_correlation();
+  out["contact_pairs"] = sums.contact_pairs;
+  out["mean_spin"] = d == 3 ? py::cast(std::vector<double>(sums.mean_spin.begin(), sums.mean_spin.end())) : py::cast(sums.mean_spin[2]);
+  out["spin_variance"] = sums.spin_variance;
+  return out;
+}
+
 }  // namespace
 
 void bind_analysis(py::module_& m) {
@@ -223,6 +277,23 @@ density mode (its |k|, angle, length 2π/|k| and significance) and the mode maps
 The arrays, box, U and Δ are checked as by cell_fields; dk must be a finite wavenumber > 0 that
 makes at most 2^32 annuli.  FFT grids, mode maps and copies larger than the available memory
 raise MemoryError before they are allocated.
+)doc");
+  m.def("spin_correlation", &spin_correlation, py::arg("positions"), py::arg("spins"), py::arg("box"),
+        py::arg("diameter") = 1.0, py::arg("diameters") = py::none(), py::arg("shear_offset") = 0.0,
+        py::arg("walls") = py::none(), py::arg("max_distance") = 3.0, py::arg("bins") = 20, py::arg("contact_shell") = 0.1,
+        R"doc(
+Spin correlation of neighbouring rough grains (granule analyze spins, thesis Fig C.4) of one
+configuration: N × d lab positions in [0, L), spins ω_z (N,) for disks or ω (N, 3) for spheres
+(Simulation.spins), box (L_x, L_y[, L_z]), the diameter σ (or per-grain diameters (N,)), the
+Lees–Edwards offset Δ of the images above (Simulation.shear_offset) and walls, one bool per axis
+(no images across a wall; y walls drop Δ).  With δω = ω − ⟨ω⟩ (the configuration's mean spin, ≈ −γ/2
+under shear, removed) and r = |r_ij|/σ_ij, returns C(r) = ⟨δω_i·δω_j⟩_pairs / ⟨|δω|²⟩ in `bins`
+bins over [1, max_distance] ("r_edges", "r", "C", "pairs"), the same for pairs along the flow
+(|Δx| largest: "C_flow", "pairs_flow") and the gradient ("C_gradient", "pairs_gradient"),
+"C_contact" over the pairs with r < 1 + contact_shell and "contact_pairs", "mean_spin",
+"spin_variance".  Bins without pairs hold NaN.  Positions and box are checked as by cell_fields;
+spins finite, diameters positive; a periodic length below 2 · max_distance · σ_max, or
+max_distance ≤ 1 + contact_shell, raises ValueError.
 )doc");
 }
 

@@ -93,6 +93,30 @@ ConfigurationArrays configuration_arrays(const py::object& positions, const py::
   return arrays;
 }
 
+std::vector<std::vector<double>> particle_columns(const py::object& value, const char* name, std::size_t particles,
+                                                  int columns, bool positive) {
+  const py::array array = real_array(value, name, columns == 1 ? 1 : 2);
+  if (static_cast<std::size_t>(array.shape(0)) != particles || (columns > 1 && array.shape(1) != columns)) {
+    throw py::value_error(columns == 1 ? fmt::format("{} must have N = {} entries, not {}", name, particles, array.shape(0))
+                                       : fmt::format("{} must be an N × {} array (N = {}), not {} × {}", name, columns,
+                                                     particles, array.shape(0), array.shape(1)));
+  }
+  const Array values = doubles(array);
+  const double* data = values.data();
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(columns), std::vector<double>(particles));
+  for (std::size_t i = 0; i < particles; ++i) {
+    for (std::size_t c = 0; c < out.size(); ++c) {
+      const double v = data[i * out.size() + c];
+      if (!std::isfinite(v) || (positive && !(v > 0.0))) {
+        throw py::value_error(fmt::format("{}[{}{}] = {}: must be {}finite", name, i, columns > 1 ? fmt::format(", {}", c) : "",
+                                          v, positive ? "positive and " : ""));
+      }
+      out[c][i] = v;
+    }
+  }
+  return out;
+}
+
 Box box_argument(const py::object& box, int dimension) {
   const py::array lengths = real_array(box, "box", 1);
   if (lengths.shape(0) != dimension) {

@@ -47,6 +47,12 @@ ConfigurationArrays configuration_arrays(const pybind11::object& positions, cons
 // factor 1e9 (its largest L/σ) of the others: ValueError otherwise.
 Box box_argument(const pybind11::object& box, int dimension);
 
+// A per-particle array as `columns` columns of N finite numbers (positive when `positive`): shape (N,)
+// for one column, (N, columns) for more.  TypeError for a dtype that is not real, ValueError naming
+// `name` and the first bad entry.
+std::vector<std::vector<double>> particle_columns(const pybind11::object& value, const char* name, std::size_t particles,
+                                                  int columns, bool positive);
+
 // The bytes an analysis holds per particle at the most (the copies below and the ParticleState;
 // the analyses count their own arrays), for the memory check made before copying.
 inline constexpr double kAnalysisBytesPerParticle = 256.0;

@@ -55,7 +55,7 @@ void check_file_schema(const std::string& path, const FileSchema& schema);
 
 // The measurement files that figure scripts read, each checked against its schema (its writer
 // declares it) by check_measurement_file, defined in io/measurement_schemas.cpp.
-enum class Measurement { kCollisionStatistics, kSpectra, kF1 };
+enum class Measurement { kCollisionStatistics, kSpectra, kF1, kSpins };
 void check_measurement_file(const std::string& path, Measurement kind);
 
 }  // namespace granule::h5

@@ -8,6 +8,7 @@
 #include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
 #include "io/spectra_file.hpp"
+#include "io/spins_file.hpp"
 
 namespace granule::h5 {
 
@@ -29,6 +30,7 @@ int spectra_dimension(const std::string& path) {
 void check_measurement_file(const std::string& path, Measurement kind) {
   const FileSchema& schema = kind == Measurement::kCollisionStatistics ? collision_statistics_schema()
                              : kind == Measurement::kF1                ? f1_schema()
+                             : kind == Measurement::kSpins             ? spins_file::spins_schema()
                                                                        : spectra_file::spectra_schema(spectra_dimension(path));
   check_file_schema(path, schema);
 }

@@ -1,5 +1,5 @@
 // The figures python/granule_plots draws from a run's files with matplotlib (`granule plot fields
-// | timeseries | profiles | phase | collisions | spectra | f1`): what a request asks becomes the
+// | timeseries | profiles | phase | collisions | spectra | f1 | spins`): what a request asks becomes the
 // script's arguments, and what it leaves empty keeps the script's default.
 #pragma once
 

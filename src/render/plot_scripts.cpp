@@ -38,6 +38,7 @@ std::optional<h5::Measurement> measurement_drawn_by(const std::string& script) {
   if (script == "collisions") return h5::Measurement::kCollisionStatistics;
   if (script == "spectra") return h5::Measurement::kSpectra;
   if (script == "f1") return h5::Measurement::kF1;
+  if (script == "spins") return h5::Measurement::kSpins;
   return std::nullopt;
 }
 

@@ -9,7 +9,7 @@
 //   much like the clusters in a two-dimensional sheared system", i.e. structure in the flow–gradient
 //   plane rather than layers along the vorticity z;
 // - Fig C.3, shear ramped from rest to 50: "a dense streamwise plug in the center";
-// - Fig C.4, rough disks under shear: neighbours spin in opposite senses (no analysis for it yet);
+// - Fig C.4, rough disks under shear: neighbours spin in opposite senses, C_contact < 0 (rough_shear.hpp);
 // - Fig C.5, rough disks between frictional walls: "a dense streamwise plug of low internal kinetic
 //   energy".
 // The density structure is read from the first and last frames of each run's fields.h5
@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "reproduce/density_layers.hpp"
+#include "reproduce/rough_shear.hpp"
 #include "reproduce/study.hpp"
 #include "theory/homogeneous_cooling.hpp"
 
@@ -102,6 +103,7 @@ seeds = {2}
 )",
                                  by_scale(scale, 1000, 4000, 20000, 20000), by_scale(scale, 20.0, 200.0, 400.0, 600.0),
                                  seeds)},
+      rough_shear_runs(scale, seeds),
   };
 }
 
@@ -286,16 +288,7 @@ StudyOutcome evaluate_appendix_c(Scale scale, const StudyOutputs& outputs) {
                                         "0 to 50 (N = 120000, ν = 0.05, ẽ = 0.6): here the density profiles along x, y, z",
                                         ramp));
 
-  Claim spins;
-  spins.id = "appendix_c.fig_c4.neighbours_spin_opposite";
-  spins.statement = "Fig C.4: under shear, rough disks close together spin in opposite senses (a heterogeneous spin field)";
-  spins.location = "Fig C.4 caption (N = 20000, ν = 0.05, ẽ = 0.6, β = −0.8)";
-  spins.expected = NAN;
-  spins.tolerance_reason = "no number is claimed: the caption describes a picture";
-  spins.checked = "not measured (examples/walls_spin_gravity/rough_shear_fig_c4.toml runs it; docs/walls_gravity_spin.md shows the picture)";
-  spins.unresolvable = "needs a spin correlation of neighbouring grains from the snapshots' spins, which granule has no analysis "
-                       "for yet";
-  out.claims.push_back(spins);
+  add_spin_claim(outputs.at("rough_shear"), out);
 
   const std::vector<DensityLayers> walls = layers_of(outputs.at("wall_shear"));
   add_plug_claims("appendix_c.fig_c5", "Fig C.5",
@@ -322,7 +315,7 @@ Study appendix_c_study() {
           "Appendix C (3D free cooling, shear and ramp; rough disks under shear and between walls)",
           appendix_c_runs,
           evaluate_appendix_c,
-          {}};
+          [](Scale) { return std::vector<PointAnalysis>{rough_shear_spins_analysis()}; }};
 }
 
 }  // namespace granule::reproduce

@@ -1,6 +1,7 @@
 """Shared by the file fuzz tests (test_file_fuzz.py, test_measurement_fuzz.py): the small real
 outputs that are mutated (a sheared 2D run with the TC model and rough grains; a 3D polydisperse
-run between walls under gravity; each with its spectra, the 2D one with its f1 analysis), the
+run between walls under gravity; each with its spectra and spin correlation, the 2D one with its f1
+analysis), the
 in-process fuzzer of a reader, and the command-line sample.
 
 Seeded (GRANULE_FUZZ_SEED, default 1): a failure names the seed and the mutant's index, and
@@ -33,7 +34,7 @@ RUNS = {
 
 
 def seed_runs():
-    """The seed runs' directories by name, with spectra.h5 (and f1.h5 in 2D) beside their outputs."""
+    """The seed runs' directories by name, with spectra.h5, spins.h5 (and f1.h5 in 2D) beside their outputs."""
     originals = {}
     for name, settings in RUNS.items():
         out = WORK / name
@@ -42,6 +43,8 @@ def seed_runs():
         if result.returncode == 0:
             spectra = granule("analyze", "spectra", out / "snapshots.h5", "--out", out / "spectra.h5", "--max-mode", 8)
             check(spectra.returncode == 0, f"spectra of {name}: {spectra.stderr[-500:]}")
+            spins = granule("analyze", "spins", out, "--out", out / "spins.h5", "--bins", 8)
+            check(spins.returncode == 0, f"spins of {name}: {spins.stderr[-500:]}")
             originals[name] = out
     # f1.h5 (2D only): one window of 2 × 2 cells wide enough for every cell of every frame, bootstrapped.
     if "sheared_2d" in originals:

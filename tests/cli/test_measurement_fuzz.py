@@ -1,4 +1,4 @@
-"""The measurement files that only figure scripts read (collisions.h5, spectra.h5, f1.h5) are
+"""The measurement files that only figure scripts read (collisions.h5, spectra.h5, f1.h5, spins.h5) are
 untrusted too.  Mutants of small real outputs (tests/cli/fuzz_seeds.py) meet:
 
 - the schema check `granule plot` makes before it starts a script (io/file_schema.hpp), in one
@@ -21,10 +21,10 @@ from harness import check, finish
 FIGURES = os.environ.get("GRANULE_FUZZ_FIGURES", "1") == "1"
 os.environ.setdefault("GRANULE_FUZZ_FIGURE_MUTANTS", "30")
 FIGURE_FUZZ = Path(__file__).resolve().parents[1] / "fuzz" / "figure_fuzz.py"
-FIGURE_OPTIONS = {"collisions": [], "spectra": [], "f1": ["--dpi", "40"]}
+FIGURE_OPTIONS = {"collisions": [], "spectra": [], "f1": ["--dpi", "40"], "spins": ["--dpi", "40"]}
 
 originals = seed_runs()
-for reader, source in (("collisions", "collisions.h5"), ("spectra", "spectra.h5"), ("f1", "f1.h5")):
+for reader, source in (("collisions", "collisions.h5"), ("spectra", "spectra.h5"), ("f1", "f1.h5"), ("spins", "spins.h5")):
     runs = {name: out for name, out in originals.items() if (out / source).exists()}
     for name, out in runs.items():
         work = WORK / f"fuzz_{reader}_{name}"
@@ -43,8 +43,9 @@ def commands(mutant_dir, out):
         "collisions.h5": [["plot", "collisions", mutant_dir / "collisions.h5", "--out", out / "collisions.png"]],
         "spectra.h5": [["plot", "spectra", mutant_dir / "spectra.h5", "--out", out / "spectra.png"]],
         "f1.h5": [["plot", "f1", mutant_dir / "f1.h5", "--out", out / "f1.png"]],
+        "spins.h5": [["plot", "spins", mutant_dir / "spins.h5", "--out", out / "spins.png"]],
     }
 
 
-command_line_sample(originals, ("collisions.h5", "spectra.h5", "f1.h5"), commands)
+command_line_sample(originals, ("collisions.h5", "spectra.h5", "f1.h5", "spins.h5"), commands)
 finish()

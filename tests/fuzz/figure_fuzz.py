@@ -1,5 +1,6 @@
 """The figure scripts against the mutants Granule's reading layer accepted: the second half of the
-file fuzz of the measurement files that only figure scripts read (collisions.h5, spectra.h5, f1.h5).
+file fuzz of the measurement files that only figure scripts read (collisions.h5, spectra.h5, f1.h5,
+spins.h5).
 
     figure_fuzz.py FUZZER SCRIPT ORIGINAL SEED ACCEPTED WORK [SCRIPT OPTIONS...]
 

@@ -11,7 +11,7 @@
 //
 // READER: snapshots (a snapshots.h5), fields (a fields.h5), resume (ORIGINAL is a run directory;
 // its checkpoint.h5 is mutated and the run is set up for resuming as `granule run --resume` does),
-// collisions, spectra, f1 (the measurement files figure scripts read: the schema check `granule
+// collisions, spectra, f1, spins (the measurement files figure scripts read: the schema check `granule
 // plot` makes before it starts the script; the indices of the mutants it accepts are written to
 // WORK_DIR/accepted.txt, for tests/fuzz/figure_fuzz.py to give to the script itself),
 // and the text readers of text_readers.hpp (sweep-record, timeseries; `mutate-text` writes one of
@@ -87,7 +87,8 @@ void resume(const RunConfig& config, const std::string& dir) {
 
 const std::map<std::string, h5::Measurement> kMeasurementReaders{{"collisions", h5::Measurement::kCollisionStatistics},
                                                                  {"spectra", h5::Measurement::kSpectra},
-                                                                 {"f1", h5::Measurement::kF1}};
+                                                                 {"f1", h5::Measurement::kF1},
+                                                                 {"spins", h5::Measurement::kSpins}};
 
 struct Tally {
   long clean = 0, refused = 0, failed = 0;
@@ -192,7 +193,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc != 6) {
-    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|collisions|spectra|f1|sweep-record|timeseries ORIGINAL MUTANTS SEED WORK_DIR\n"
+    std::fprintf(stderr, "usage: granule_file_fuzz snapshots|fields|resume|collisions|spectra|f1|spins|sweep-record|timeseries ORIGINAL MUTANTS SEED WORK_DIR\n"
                          "       granule_file_fuzz mutate ORIGINAL MUTANT SEED INDEX\n"
                          "       granule_file_fuzz mutate-text ORIGINAL MUTANT SEED INDEX\n"
                          "       granule_file_fuzz reseal CHECKPOINT\n");

@@ -320,6 +320,29 @@ def part_analysis(tally, r, scratch):
                 kwargs[flag] = r.random() < 0.5
         tally.call(f"spectra({np.shape(positions)}, {kwargs!r:.200})", granule.spectra, positions, velocities, box,
                    **kwargs)
+    for _ in range(300):
+        positions, velocities, box, kwargs = analysis_arguments(r, rng)
+        kwargs.pop("masses", None)
+        kwargs.pop("shear_velocity", None)
+        n = np.shape(positions)[0] if np.ndim(positions) >= 1 else 0
+        d = np.shape(positions)[1] if np.ndim(positions) == 2 else 2
+        spins = r.choice([rng.normal(size=n), rng.normal(size=(n, 3)), rng.normal(size=(n, d)), rng.normal(size=n + 1),
+                          np.full(n, np.nan), None, "ab", hostile(r)])
+        if r.random() < 0.3:
+            kwargs["diameters"] = r.choice([rng.random(n) * 0.05 + 0.01, np.zeros(n), np.full(n, np.inf), rng.random(n + 1),
+                                            np.full(n, 1e300), hostile(r)])
+        if r.random() < 0.3:
+            kwargs["diameter"] = r.choice([0.01, 0.1, 0.0, -1.0, np.nan, 1e300, 1e-300, hostile(r)])
+        if r.random() < 0.3:
+            kwargs["walls"] = r.choice([(True,) * d, (False, True), (True, False, True), (1, 0), "ab", (None,) * d, hostile(r)])
+        if r.random() < 0.3:
+            kwargs["max_distance"] = r.choice([3.0, 1.0, 1.05, 100.0, 1e300, np.nan, -2.0, hostile(r)])
+        if r.random() < 0.3:
+            kwargs["bins"] = r.choice([1, 20, 0, -1, 100001, 2**70, 2.5, hostile(r)])
+        if r.random() < 0.2:
+            kwargs["contact_shell"] = r.choice([0.1, 0.0, -0.1, 5.0, np.nan, np.inf, hostile(r)])
+        tally.call(f"spin_correlation({np.shape(positions)}, {kwargs!r:.200})", granule.spin_correlation, positions, spins,
+                   box, **kwargs)
     # Sizes that must be refused before anything is allocated: views of 2^40 particles, 2^42 cells.
     huge = np.broadcast_to(np.zeros(2), (2**40, 2))
     for _ in range(10):

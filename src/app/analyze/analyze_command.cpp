@@ -9,6 +9,7 @@ void add_analyze_command(CLI::App& root) {
   add_analyze_collisions(*analyze);
   add_analyze_spectra(*analyze);
   add_analyze_f1(*analyze);
+  add_analyze_spins(*analyze);
 }
 
 }  // namespace granule::app

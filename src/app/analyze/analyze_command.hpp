@@ -13,5 +13,6 @@ void add_analyze_fields(CLI::App& analyze);
 void add_analyze_collisions(CLI::App& analyze);
 void add_analyze_spectra(CLI::App& analyze);
 void add_analyze_f1(CLI::App& analyze);
+void add_analyze_spins(CLI::App& analyze);
 
 }  // namespace granule::app

@@ -1,4 +1,4 @@
-// `granule plot fields | timeseries | profiles | phase | collisions | spectra | f1`: line plots and shaded
+// `granule plot fields | timeseries | profiles | phase | collisions | spectra | f1 | spins`: line plots and shaded
 // maps drawn by the matplotlib scripts of python/granule_plots (run with Debian's /usr/bin/python3);
 // `fields` of a 3D run draws density isosurfaces instead (fields3d.py).
 #include <fmt/format.h>
@@ -87,6 +87,9 @@ constexpr ScriptKind kKinds[] = {
      "The velocity distribution of `granule analyze f1`: h, phi, J, psi with their fits, b(theta), f*, f** and "
      "the Jenkins-Richman form, and the per-window means, phases, stresses and ratio (thesis Figs 5.1-5.11)",
      false, true, "Window of the f1 file drawn in the upper rows: its index K (negative counts from the end)", "0"},
+    {"spins", "spins", "spins.h5", "spins.png",
+     "The spin correlation C(r) of neighbouring rough grains from the spins.h5 of `granule analyze spins`, overall and "
+     "for pairs along the flow and along the gradient, with C_contact (thesis Fig C.4)", false, true},
 };
 
 }  // namespace
