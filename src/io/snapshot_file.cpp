@@ -71,7 +71,9 @@ auto& spin_column(State& state, int k) { return state.spin(state.dimension == 3 
 // The parameters of rough grains, walls and gravity as root attributes, each group only when the run has it: roughness
 // (`tangential_restitution` β, `inertia_factor` q, `friction` μ, +inf without a Coulomb limit),
 // walls (`walls` [x, y, z] 0/1, and per face 2·axis + side `wall_restitution`,
-// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3)), `gravity` [g_x, g_y, g_z], and a
+// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3); when a wall moves normal to itself,
+// `wall_vibration` (6 × 2: amplitude A and frequency f per face, 0 for none) and, for schedules,
+// the dataset `wall_schedule` (K × 3: face, t, h per point)), `gravity` [g_x, g_y, g_z], and a
 // speed-dependent restitution (`restitution_law` "threshold" with `elastic_below`, or
 // "viscoelastic" with `viscoelastic_constant`).
 void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
@@ -92,6 +94,18 @@ void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
     write_attribute(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution, 6);
     write_attribute(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential, 6);
     write_attribute(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
+    double vibration[12];
+    std::vector<double> schedule;
+    bool moves = false;
+    for (std::size_t face = 0; face < 6; ++face) {
+      const WallMotion& m = p.wall[face].motion;
+      moves = moves || m.moves();
+      vibration[2 * face] = m.amplitude;
+      vibration[2 * face + 1] = m.frequency;
+      for (const WallPositionPoint& point : m.schedule) schedule.insert(schedule.end(), {static_cast<double>(face), point.time, point.displacement});
+    }
+    if (moves) write_attribute(f, "wall_vibration", H5T_NATIVE_DOUBLE, vibration, 12);
+    if (!schedule.empty()) write_dataset(f, "wall_schedule", {schedule.size() / 3, 3}, schedule);
   }
   if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
   const RestitutionLaw& law = p.restitution_law;
@@ -123,6 +137,25 @@ void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
       p.wall[face].restitution = restitution[face];
       p.wall[face].tangential_restitution = tangential[face];
       for (std::size_t a = 0; a < 3; ++a) p.wall[face].velocity[a] = velocity[3 * face + a];
+    }
+    if (has_attribute(f, "wall_vibration")) {
+      double vibration[12];
+      read_attribute_values(f, "wall_vibration", H5T_NATIVE_DOUBLE, vibration, 12);
+      for (std::size_t face = 0; face < 6; ++face) {
+        p.wall[face].motion.amplitude = vibration[2 * face];
+        p.wall[face].motion.frequency = vibration[2 * face + 1];
+      }
+    }
+    if (has_link(f, "wall_schedule")) {
+      const std::vector<double> rows = read_values(f, "wall_schedule");
+      if (rows.size() % 3 != 0) throw InputError(file_name(f) + ": dataset wall_schedule must have 3 columns (face, t, h)");
+      for (std::size_t k = 0; k < rows.size(); k += 3) {
+        const double face = rows[k];
+        if (!(face >= 0.0 && face <= 5.0 && face == std::floor(face))) {
+          throw InputError(file_name(f) + ": dataset wall_schedule names face " + std::to_string(face) + "; expected 0 to 5");
+        }
+        p.wall[static_cast<std::size_t>(face)].motion.schedule.push_back({rows[k + 1], rows[k + 2]});
+      }
     }
   }
   if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);

@@ -18,6 +18,29 @@ void require(std::vector<std::string>& problems, const std::string& name, double
   if (!range.contains(value)) problems.push_back(fmt::format("{} is {}; expected {}", name, value, range.text()));
 }
 
+// A wall's motion as the configuration allows it (io/config_wall_motion.cpp): A in [0, L], f > 0
+// with A > 0, schedule times increasing from t ≥ 0, h in [0, L] from h = 0, and a largest
+// displacement that leaves a grain room.
+void wall_motion_problems(std::vector<std::string>& problems, const std::string& wall, const WallMotion& m, double length,
+                          double diameter) {
+  const NumberRange displacements{0.0, length};
+  require(problems, "vibration amplitude of " + wall, m.amplitude, displacements);
+  if (m.amplitude > 0.0 && !(m.frequency > 0.0 && std::isfinite(m.frequency))) {
+    problems.push_back(fmt::format("vibration frequency of {} is {}; allowed: a finite f > 0", wall, m.frequency));
+  }
+  for (std::size_t k = 0; k < m.schedule.size(); ++k) {
+    const WallPositionPoint& p = m.schedule[k];
+    const bool ordered = k == 0 ? p.time >= 0.0 && p.displacement == 0.0 : p.time > m.schedule[k - 1].time;
+    if (!ordered || !std::isfinite(p.time) || !displacements.contains(p.displacement)) {
+      problems.push_back(fmt::format("schedule point {} of {} is ({}, {}); allowed: times t ≥ 0 increasing, h in {} from h = 0",
+                                     k, wall, p.time, p.displacement, displacements.text()));
+    }
+  }
+  if (m.moves() && !(m.reach() < length - diameter)) {
+    problems.push_back(fmt::format("{} moves {} into the box; allowed: less than L − σ = {}", wall, m.reach(), length - diameter));
+  }
+}
+
 void require_finite(std::vector<std::string>& problems, const std::string& name, double value) {
   if (!std::isfinite(value)) problems.push_back(fmt::format("{} is {}; expected a finite number", name, value));
 }
@@ -72,6 +95,8 @@ std::vector<std::string> system_problems(const SystemParams& s) {
     require(problems, "restitution of " + wall, s.wall[face].restitution, kRestitutions);
     require(problems, "tangential restitution of " + wall, s.wall[face].tangential_restitution, kTangentialRestitutions);
     for (std::size_t a = 0; a < 3; ++a) require_finite(problems, fmt::format("velocity of {} along {}", wall, kAxes[a]), s.wall[face].velocity[a]);
+    wall_motion_problems(problems, wall, s.wall[face].motion, face / 2 == 0 ? s.length_x : face / 2 == 1 ? s.length_y : s.length_z,
+                         s.diameter);
   }
   return problems;
 }

@@ -164,19 +164,35 @@ void draw_legend(cairo_t* cr, const PictureOptions& options, int width, double l
   }
 }
 
-// The walls as black lines on the faces (2 px at least, so that they show beside touching disks).
+// The walls as black lines where they stand (2 px at least, so that they show beside touching
+// disks); a wall that has moved into the box leaves the space behind it grey.
 void draw_walls(cairo_t* cr, const ConfigurationScene& scene, const PixelMap& map, double line_width) {
+  const double lx = scene.frame.length_x, ly = scene.frame.length_y;
+  const auto shift = [&](int face) { return scene.wall_shift[static_cast<std::size_t>(face)]; };
+  cairo_set_source_rgb(cr, 0.8, 0.8, 0.8);
+  for (int axis = 0; axis < 2; ++axis) {
+    if (!scene.walls[static_cast<std::size_t>(axis)]) continue;
+    const double length = axis == 0 ? lx : ly;
+    for (const auto& [from, to] : {std::pair{0.0, shift(2 * axis)}, std::pair{length - shift(2 * axis + 1), length}}) {
+      if (!(to > from)) continue;
+      const double x0 = axis == 0 ? from : 0.0, x1 = axis == 0 ? to : lx;
+      const double y0 = axis == 1 ? from : 0.0, y1 = axis == 1 ? to : ly;
+      cairo_rectangle(cr, map.px(x0), map.py(y1), map.px(x1) - map.px(x0), map.py(y0) - map.py(y1));
+      cairo_fill(cr);
+    }
+  }
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   cairo_set_line_width(cr, line_width);
-  const double lx = scene.frame.length_x, ly = scene.frame.length_y;
   for (int side = 0; side < 2; ++side) {
     if (scene.walls[0]) {
-      cairo_move_to(cr, map.px(side * lx), map.py(0.0));
-      cairo_line_to(cr, map.px(side * lx), map.py(ly));
+      const double x = side == 0 ? shift(0) : lx - shift(1);
+      cairo_move_to(cr, map.px(x), map.py(0.0));
+      cairo_line_to(cr, map.px(x), map.py(ly));
     }
     if (scene.walls[1]) {
-      cairo_move_to(cr, map.px(0.0), map.py(side * ly));
-      cairo_line_to(cr, map.px(lx), map.py(side * ly));
+      const double y = side == 0 ? shift(2) : ly - shift(3);
+      cairo_move_to(cr, map.px(0.0), map.py(y));
+      cairo_line_to(cr, map.px(lx), map.py(y));
     }
   }
   cairo_stroke(cr);

@@ -33,6 +33,8 @@ struct ConfigurationScene {
   ShearFrame frame;                // box and Lees–Edwards shear velocity U
   double shear_offset = 0.0;       // Lees–Edwards image offset Δ ∈ [0, L_x)
   std::array<bool, 2> walls{};     // flat walls at both ends of x, of y (SystemParams::walls)
+  // How far each wall (faces x0, x1, y0, y1) has moved into the box (a vibrated floor, a piston).
+  std::array<double, 4> wall_shift{};
 };
 
 struct PictureOptions {

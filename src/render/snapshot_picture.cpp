@@ -12,8 +12,13 @@ namespace granule::render {
 RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const PictureOptions& options) {
   const SystemParams& s = snapshot.metadata.system;
   const ShearFrame box{s.length_x, s.length_y, snapshot.metadata.boundary == "lees-edwards" ? s.shear_velocity : 0.0};
-  return render_configuration({snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset, {s.walls[0], s.walls[1]}},
-                              options);
+  std::array<double, 4> shift{};
+  for (std::size_t face = 0; face < shift.size(); ++face) {
+    const WallMotion& motion = s.wall[face].motion;
+    if (motion.moves()) shift[face] = motion.velocity().integral(0.0, snapshot.frame.clock.time);
+  }
+  return render_configuration(
+      {snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset, {s.walls[0], s.walls[1]}, shift}, options);
 }
 
 void choose_spin_coloring(PictureOptions& options, bool coloring_chosen, const SnapshotMetadata& metadata) {

@@ -66,7 +66,9 @@ struct GoldenCase {
   double area_fraction, restitution, shear_velocity, tc_duration, collisions_per_particle;
   std::uint64_t seed;
   std::uint64_t expected;
-  bool protocol = false;  // a ramp with a sinusoidal kick (thesis §4.3) from production on
+  // A ramp with a sinusoidal kick (thesis §4.3) from production on: of the Lees–Edwards images, or
+  // of the walls of a wall-driven shear.
+  bool protocol = false;
   int dimension = 2;      // area_fraction is then the packing fraction
   double size_ratio = 1.0;                // ≠ 1: a binary mixture, half of the grains this much larger
   double tangential_restitution = -1.0;   // > −1: rough grains (β), with spin
@@ -77,6 +79,7 @@ struct GoldenCase {
     double wall_restitution = 1.0;
     double wall_tangential_restitution = -1.0;  // > −1: rough walls
     double wall_velocity = 0.0;                 // y walls moving along x at ∓U/2 (a wall-driven shear)
+    double floor_amplitude = 0.0, floor_frequency = 0.0;  // A > 0: the floor y0 vibrates (WallMotion)
   } surfaces{};
   RestitutionLaw speed_law{};  // how ẽ (and e_w) depend on the impact speed in production
 };
@@ -117,9 +120,18 @@ GoldenRun final_state(const GoldenCase& k, double renumber_every) {
   }
   p.wall[2].velocity[0] = -0.5 * k.surfaces.wall_velocity;
   p.wall[3].velocity[0] = 0.5 * k.surfaces.wall_velocity;
+  p.wall[2].motion = {k.surfaces.floor_amplitude, k.surfaces.floor_frequency, {}};
   if (k.protocol) {
-    p.shear_history.ramp_time = 0.05;
-    p.shear_history.oscillation = ShearOscillation{0.3 * k.shear_velocity, 0.02, 0.05, 5.0};
+    const double u0 = p.walls[1] ? k.surfaces.wall_velocity : k.shear_velocity;
+    ShearHistory history;
+    history.ramp_time = 0.05;
+    history.oscillation = ShearOscillation{0.3 * u0, 0.02, 0.05, 5.0};
+    if (p.walls[1]) {
+      p.wall[2].along = scaled(history, -0.5);
+      p.wall[3].along = scaled(history, 0.5);
+    } else {
+      p.shear_history = history;
+    }
   }
   CellGridRequest request{1.0, 1.0, p.diameter, p.particles, k.shear_velocity != 0.0, 1.0, std::nullopt};
   request.dimension = D;
@@ -207,7 +219,13 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"viscoelastic_disks_mixture_floor", 1500, 0.15, 1.0, 0.0, 0.0, 30.0, 31, 0xa8ad8b8001e193e0ULL, false, 2, 1.4, -1.0,
                                  {{false, true, false}, {0.0, -0.5, 0.0}, 1.0}, {RestitutionKind::kViscoelastic, 0.0, 0.1}},
                       GoldenCase{"threshold_spheres_tc", 1500, 0.2, 0.7, 0.0, 1e-7, 30.0, 32, 0xe2e959434348f31fULL, false, 3, 1.0, -1.0, {},
-                                 {RestitutionKind::kThreshold, 0.3}}),
+                                 {RestitutionKind::kThreshold, 0.3}},
+                      // Walls that move: a vibrated floor under gravity (Γ ≈ 3.6), and rough
+                      // spheres sheared by walls ramped and kicked as in Chapter 4.
+                      GoldenCase{"vibrated_floor_disks_tc", 1500, 0.15, 0.9, 0.0, 1e-6, 30.0, 41, 0xcd41943094150aaaULL, false, 2, 1.0, -1.0,
+                                 {{false, true, false}, {0.0, -1.0, 0.0}, 0.9, -1.0, 0.0, 0.01, 3.0}},
+                      GoldenCase{"driven_walls_rough_spheres", 1500, 0.2, 0.9, 0.0, 1e-6, 30.0, 42, 0xe3d3b50856b01b20ULL, true, 3, 1.0, 0.4,
+                                 {{false, true, false}, {}, 0.9, 0.3, 4.0}}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace
