@@ -10,54 +10,15 @@
 
 #include "physics/restitution_law.hpp"
 #include "physics/viscoelastic_restitution.hpp"
+#include "validation/viscoelastic_collision.hpp"
 
 namespace granule {
 namespace {
 
-// Two viscoelastic spheres: Young's modulus Y, Poisson ratio ν, dissipative constant A, radii and
-// masses; the contact of radius R_eff and mass m_eff.
-struct Material {
-  double young = 1e7, poisson = 0.3, dissipation = 5e-4;
-};
-
-double rho(const Material& m, double radius, double mass) {
-  return 2.0 * m.young * std::sqrt(radius) / (3.0 * mass * (1.0 - m.poisson * m.poisson));
-}
-
-// m_eff ξ'' = −ρ m_eff (ξ^{3/2} + (3/2) A ξ^{1/2} ξ'), ξ(0) = 0, ξ'(0) = g, integrated with classical
-// RK4 at a fixed step of a 20000th of the elastic collision's duration, the first step from the
-// series ξ ≈ g t (where ξ^{1/2} is not smooth); the contact ends where the force vanishes.  Returns
-// −ξ'(end)/g.
-double restitution_by_integration(const Material& m, double radius, double mass, double speed) {
-  const double r = rho(m, radius, mass), a = m.dissipation;
-  const double duration = 3.22 * std::pow(speed, -0.2) * std::pow(r, -0.4);  // elastic Hertz contact
-  const double h = duration / 20000.0;
-  const auto force = [&](double xi, double v) { return -r * std::sqrt(std::max(xi, 0.0)) * (xi + 1.5 * a * v); };
-  double t = 1e-4 * h, xi = speed * t, v = speed;
-  while (t < 10.0 * duration) {
-    const double k1x = v, k1v = force(xi, v);
-    const double k2x = v + 0.5 * h * k1v, k2v = force(xi + 0.5 * h * k1x, v + 0.5 * h * k1v);
-    const double k3x = v + 0.5 * h * k2v, k3v = force(xi + 0.5 * h * k2x, v + 0.5 * h * k2v);
-    const double k4x = v + h * k3v, k4v = force(xi + h * k3x, v + h * k3v);
-    const double xi_next = xi + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    const double v_next = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    if (v_next < 0.0 && xi_next + 1.5 * a * v_next < 0.0) {
-      // The force's zero within the step, linearly between its ends.
-      const double before = xi + 1.5 * a * v, after = xi_next + 1.5 * a * v_next;
-      const double f = before / (before - after);
-      return -(v + f * (v_next - v)) / speed;
-    }
-    xi = xi_next;
-    v = v_next;
-    t += h;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
 TEST(ViscoelasticRestitution, EqualsTheIntegratedCollisionAtEverySpeed) {
-  const Material m;
+  const ViscoelasticMaterial m;
   const double radius = 0.25, mass = 0.5;  // two grains of diameter 1 and unit mass
-  const double delta = 1.5 * m.dissipation * std::pow(rho(m, radius, mass), 0.4);
+  const double delta = 1.5 * m.dissipation * std::pow(hertz_rho(m, radius, mass), 0.4);
   for (const double speed : {1e-6, 1e-3, 0.1, 1.0, 10.0, 1e3, 1e5}) {
     const double expected = restitution_by_integration(m, radius, mass, speed);
     const double y = delta * std::pow(speed, 0.2);
@@ -97,12 +58,12 @@ TEST(ViscoelasticRestitution, FallsMonotonicallyFromOneAndStaysPositive) {
 // one of a₂, m₂, and against a wall of the same material, each equals the integrated collision of
 // that contact.
 TEST(RestitutionLaw, ViscoelasticConstantFollowsTheContactsRadiusAndMass) {
-  const Material m;
+  const ViscoelasticMaterial m;
   const double sigma = 0.02;
   RestitutionLaw law;
   law.kind = RestitutionKind::kViscoelastic;
   law.reference_radius = 0.5 * sigma;
-  law.viscoelastic_constant = 1.5 * m.dissipation * std::pow(rho(m, 0.25 * sigma, 0.5), 0.4);
+  law.viscoelastic_constant = 1.5 * m.dissipation * std::pow(hertz_rho(m, 0.25 * sigma, 0.5), 0.4);
   const double inf = std::numeric_limits<double>::infinity();
   struct Contact {
     double a1, m1, a2, m2, radius, mass;

@@ -16,40 +16,18 @@
 #include <vector>
 
 #include "validation/surfaces_setup.hpp"
+#include "validation/viscoelastic_collision.hpp"
 
 namespace granule {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Young's modulus, Poisson ratio and dissipative constant of the grains' material.
-constexpr double kYoung = 1e7, kPoisson = 0.3, kDissipation = 5e-4;
-
-double rho(double radius, double mass) { return 2.0 * kYoung * std::sqrt(radius) / (3.0 * mass * (1.0 - kPoisson * kPoisson)); }
-
-// −ξ'(end)/g of m_eff ξ'' = −ρ m_eff (ξ^{3/2} + (3/2) A ξ^{1/2} ξ'), ξ(0) = 0, ξ'(0) = g, by RK4 at
-// a fixed step of a 20000th of the elastic contact's duration; the contact ends where the force
-// vanishes (the zero located linearly within its step).
+// The grains' material (Young's modulus, Poisson ratio, dissipative constant) and the contact's ẽ
+// by integration (validation/viscoelastic_collision.hpp).
+const ViscoelasticMaterial kMaterial;
 double restitution_by_integration(double radius, double mass, double speed) {
-  const double r = rho(radius, mass), a = kDissipation;
-  const double h = 3.22 * std::pow(speed, -0.2) * std::pow(r, -0.4) / 20000.0;
-  const auto force = [&](double xi, double v) { return -r * std::sqrt(std::max(xi, 0.0)) * (xi + 1.5 * a * v); };
-  double xi = speed * 1e-4 * h, v = speed;
-  for (int step = 0; step < 200000; ++step) {
-    const double k1x = v, k1v = force(xi, v);
-    const double k2x = v + 0.5 * h * k1v, k2v = force(xi + 0.5 * h * k1x, v + 0.5 * h * k1v);
-    const double k3x = v + 0.5 * h * k2v, k3v = force(xi + 0.5 * h * k2x, v + 0.5 * h * k2v);
-    const double k4x = v + h * k3v, k4v = force(xi + h * k3x, v + h * k3v);
-    const double xi_next = xi + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    const double v_next = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    if (v_next < 0.0 && xi_next + 1.5 * a * v_next < 0.0) {
-      const double before = xi + 1.5 * a * v, after = xi_next + 1.5 * a * v_next;
-      return -(v + before / (before - after) * (v_next - v)) / speed;
-    }
-    xi = xi_next;
-    v = v_next;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+  return restitution_by_integration(kMaterial, radius, mass, speed);
 }
 
 // The law of grains of diameter sigma (unit mass for the reference pair).
@@ -57,7 +35,7 @@ RestitutionLaw viscoelastic_law(double sigma) {
   RestitutionLaw law;
   law.kind = RestitutionKind::kViscoelastic;
   law.reference_radius = 0.5 * sigma;
-  law.viscoelastic_constant = 1.5 * kDissipation * std::pow(rho(0.25 * sigma, 0.5), 0.4);
+  law.viscoelastic_constant = 1.5 * kMaterial.dissipation * std::pow(hertz_rho(kMaterial, 0.25 * sigma, 0.5), 0.4);
   return law;
 }
 
