@@ -11,6 +11,7 @@
 
 #include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
+#include "io/surface_attributes.hpp"
 #include "io/system_checks.hpp"
 
 namespace granule {
@@ -67,112 +68,6 @@ void deinterleave(const std::vector<double>& rows, std::size_t n, int components
 // The spin components in the order of the `spins` rows: ω_z of disks; ω_x, ω_y, ω_z of spheres.
 template <typename State>
 auto& spin_column(State& state, int k) { return state.spin(state.dimension == 3 ? k : 2); }
-
-// The parameters of rough grains, walls and gravity as root attributes, each group only when the run has it: roughness
-// (`tangential_restitution` β, `inertia_factor` q, `friction` μ, +inf without a Coulomb limit),
-// walls (`walls` [x, y, z] 0/1, and per face 2·axis + side `wall_restitution`,
-// `wall_tangential_restitution` (6,), `wall_velocity` (6 × 3); when a wall moves normal to itself,
-// `wall_vibration` (6 × 2: amplitude A and frequency f per face, 0 for none) and, for schedules,
-// the dataset `wall_schedule` (K × 3: face, t, h per point)), `gravity` [g_x, g_y, g_z], and a
-// speed-dependent restitution (`restitution_law` "threshold" with `elastic_below`, or
-// "viscoelastic" with `viscoelastic_constant`).
-void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
-  if (p.roughness.rough) {
-    write_attribute(f, "tangential_restitution", H5T_NATIVE_DOUBLE, &p.roughness.tangential_restitution);
-    write_attribute(f, "inertia_factor", H5T_NATIVE_DOUBLE, &p.roughness.inertia_factor);
-    write_attribute(f, "friction", H5T_NATIVE_DOUBLE, &p.roughness.friction);
-  }
-  if (p.has_walls()) {
-    const int walls[3] = {p.walls[0] ? 1 : 0, p.walls[1] ? 1 : 0, p.walls[2] ? 1 : 0};
-    write_attribute(f, "walls", H5T_NATIVE_INT, walls, 3);
-    double restitution[6], tangential[6], velocity[18];
-    for (std::size_t face = 0; face < 6; ++face) {
-      restitution[face] = p.wall[face].restitution;
-      tangential[face] = p.wall[face].tangential_restitution;
-      for (std::size_t a = 0; a < 3; ++a) velocity[3 * face + a] = p.wall[face].velocity[a];
-    }
-    write_attribute(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution, 6);
-    write_attribute(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential, 6);
-    write_attribute(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
-    double vibration[12];
-    std::vector<double> schedule;
-    bool moves = false;
-    for (std::size_t face = 0; face < 6; ++face) {
-      const WallMotion& m = p.wall[face].motion;
-      moves = moves || m.moves();
-      vibration[2 * face] = m.amplitude;
-      vibration[2 * face + 1] = m.frequency;
-      for (const WallPositionPoint& point : m.schedule) schedule.insert(schedule.end(), {static_cast<double>(face), point.time, point.displacement});
-    }
-    if (moves) write_attribute(f, "wall_vibration", H5T_NATIVE_DOUBLE, vibration, 12);
-    if (!schedule.empty()) write_dataset(f, "wall_schedule", {schedule.size() / 3, 3}, schedule);
-  }
-  if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
-  const RestitutionLaw& law = p.restitution_law;
-  if (law.kind == RestitutionKind::kThreshold) {
-    write_string_attribute(f, "restitution_law", "threshold");
-    write_attribute(f, "elastic_below", H5T_NATIVE_DOUBLE, &law.elastic_below);
-  } else if (law.kind == RestitutionKind::kViscoelastic) {
-    write_string_attribute(f, "restitution_law", "viscoelastic");
-    write_attribute(f, "viscoelastic_constant", H5T_NATIVE_DOUBLE, &law.viscoelastic_constant);
-  }
-}
-
-void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
-  p.roughness.rough = has_attribute(f, "inertia_factor");
-  if (p.roughness.rough) {
-    p.roughness.tangential_restitution = read_attribute<double>(f, "tangential_restitution", H5T_NATIVE_DOUBLE);
-    p.roughness.inertia_factor = read_attribute<double>(f, "inertia_factor", H5T_NATIVE_DOUBLE);
-    p.roughness.friction = read_attribute<double>(f, "friction", H5T_NATIVE_DOUBLE);
-  }
-  if (has_attribute(f, "walls")) {
-    int walls[3] = {0, 0, 0};
-    read_attribute_values(f, "walls", H5T_NATIVE_INT, walls, 3);
-    double restitution[6], tangential[6], velocity[18];
-    read_attribute_values(f, "wall_restitution", H5T_NATIVE_DOUBLE, restitution, 6);
-    read_attribute_values(f, "wall_tangential_restitution", H5T_NATIVE_DOUBLE, tangential, 6);
-    read_attribute_values(f, "wall_velocity", H5T_NATIVE_DOUBLE, velocity, 18);
-    for (std::size_t a = 0; a < 3; ++a) p.walls[a] = walls[a] != 0;
-    for (std::size_t face = 0; face < 6; ++face) {
-      p.wall[face].restitution = restitution[face];
-      p.wall[face].tangential_restitution = tangential[face];
-      for (std::size_t a = 0; a < 3; ++a) p.wall[face].velocity[a] = velocity[3 * face + a];
-    }
-    if (has_attribute(f, "wall_vibration")) {
-      double vibration[12];
-      read_attribute_values(f, "wall_vibration", H5T_NATIVE_DOUBLE, vibration, 12);
-      for (std::size_t face = 0; face < 6; ++face) {
-        p.wall[face].motion.amplitude = vibration[2 * face];
-        p.wall[face].motion.frequency = vibration[2 * face + 1];
-      }
-    }
-    if (has_link(f, "wall_schedule")) {
-      const std::vector<double> rows = read_values(f, "wall_schedule");
-      if (rows.size() % 3 != 0) throw InputError(file_name(f) + ": dataset wall_schedule must have 3 columns (face, t, h)");
-      for (std::size_t k = 0; k < rows.size(); k += 3) {
-        const double face = rows[k];
-        if (!(face >= 0.0 && face <= 5.0 && face == std::floor(face))) {
-          throw InputError(file_name(f) + ": dataset wall_schedule names face " + std::to_string(face) + "; expected 0 to 5");
-        }
-        p.wall[static_cast<std::size_t>(face)].motion.schedule.push_back({rows[k + 1], rows[k + 2]});
-      }
-    }
-  }
-  if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
-  if (has_attribute(f, "restitution_law")) {
-    const std::string law = read_string_attribute(f, "restitution_law");
-    if (law == "threshold") {
-      p.restitution_law.kind = RestitutionKind::kThreshold;
-      p.restitution_law.elastic_below = read_attribute<double>(f, "elastic_below", H5T_NATIVE_DOUBLE);
-    } else if (law == "viscoelastic") {
-      p.restitution_law.kind = RestitutionKind::kViscoelastic;
-      p.restitution_law.viscoelastic_constant = read_attribute<double>(f, "viscoelastic_constant", H5T_NATIVE_DOUBLE);
-    } else {
-      throw InputError(file_name(f) + ": attribute restitution_law is \"" + law + "\"; expected threshold or viscoelastic");
-    }
-    p.restitution_law.reference_radius = 0.5 * p.diameter;
-  }
-}
 
 // What is wrong with a frame's clock and counters: times, strains, offsets and U(t) finite, counts
 // not negative, the TC model's times of last collision in the past (−∞: none yet).
