@@ -203,15 +203,16 @@ class BoxBoundaries {
   }
 
  private:
+  // What every prediction reads first, together; the walls' parameters and drives after them.
   std::array<AxisBoundary, D> kind_{};
   bool walled_ = false;  // some axis has walls
+  bool drives_running_ = false;
+  std::array<bool, 6> driven_{}, moves_{};
+  ShearFrame frame_;
+  std::array<double, 3> length_{1.0, 1.0, 1.0};
   std::array<WallParams, 6> wall_{};
   // Per face: the tangential drive and the normal velocity dh/dt, as protocols of time.
   std::array<ShearProtocol, 6> along_{}, normal_{};
-  std::array<bool, 6> driven_{}, moves_{};
-  bool drives_running_ = false;
-  ShearFrame frame_;
-  std::array<double, 3> length_{1.0, 1.0, 1.0};
 };
 
 }  // namespace granule
