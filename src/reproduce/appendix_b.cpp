@@ -223,7 +223,7 @@ StudyOutcome evaluate_appendix_b(Scale scale, const StudyOutputs& outputs) {
                     "units)",
                     restitution, m.thesis_trend),
         "thesis Appendix B (the four ρ tables of each ẽ), §5.2", m.thesis_trend, m.trend, 0.0,
-        "the claim is the trend's sign, the table's slope's: the thesis gives no errors and its amplitudes are accurate to "
+        "the claim is the sign of the table's slope: the thesis gives no errors and its amplitudes are accurate to "
         "20-30 %; a slope of that sign beyond 2σ agrees, of the other sign beyond 2σ disagrees",
         "d b₀⁽¹⁾/d(ρ/10⁵) in thesis units (b₀⁽¹⁾ × u, ρ × a²), one intercept per T window, the table's slope on the same "
         "windows, " + runs,
