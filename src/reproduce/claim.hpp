@@ -14,8 +14,12 @@ enum class Verdict { agrees, disagrees, not_resolvable };
 std::string verdict_text(Verdict verdict);
 
 // How the tolerance bounds the measured number around the expected one: relative, |m − e| ≤ t|e|;
-// absolute, |m − e| ≤ t; factor, e/t ≤ m ≤ e·t (for order-of-magnitude estimates, t > 1).
-enum class ToleranceKind { relative, absolute, factor };
+// absolute, |m − e| ≤ t; factor, e/t ≤ m ≤ e·t (for order-of-magnitude estimates, t > 1); sign, the
+// claim is the sign of e alone (the band is the half-line of e's sign, t unused).
+enum class ToleranceKind { relative, absolute, factor, sign };
+
+// "relative", "absolute", "factor", "sign": the tolerance_kind column of claims.csv/json.
+const char* tolerance_kind_name(ToleranceKind kind);
 
 struct Claim {
   std::string id;         // unique within the report: "validation.henderson_pressure.nu=0.30"
@@ -31,16 +35,27 @@ struct Claim {
   std::string unresolvable;      // non-empty: why this scale (or a missing analysis) cannot decide
 };
 
-// The verdict of a claim, from its numbers alone:
-// - not resolvable when `unresolvable` says so or the measurement is missing (not finite);
-// - disagrees when the measured number lies outside the tolerance band widened by 2σ (the whole
-//   interval ±2σ misses the band);
-// - not resolvable when it lies inside but ±2σ alone is wider than the band, so that an agreement
-//   would mean nothing;
-// - agrees otherwise.
+// A verdict and, when it is "not resolvable", why (empty otherwise).
+struct Judgement {
+  Verdict verdict;
+  std::string reason;
+};
+
+// The verdict of a claim, from its numbers alone (σ its error; none, or 0, counts as 2σ = 0):
+// - not resolvable when `unresolvable` says so or a number is missing (not finite);
+// - a band claim (relative, absolute, factor) agrees when the mean lies in the closed band and 2σ is
+//   not wider than the band; with the mean inside but 2σ wider it is not resolvable (an agreement
+//   would mean nothing); with the mean outside it disagrees when the whole ±2σ interval misses the
+//   band, and is not resolvable when ±2σ still reaches it (more statistics would decide);
+// - a sign claim agrees when the whole ±2σ interval lies strictly on e's side of 0, disagrees when
+//   it lies strictly on the other side, and is not resolvable when it holds 0.
+// Without an error this is: mean in the band (on e's side of 0) agrees, outside it disagrees.
+Judgement judgement(const Claim& claim);
+
+// judgement(claim).verdict.
 Verdict judge(const Claim& claim);
 
-// The tolerance as a reader reads it: "±5 %", "±0.2", "within a factor 2".
+// The tolerance as a reader reads it: "±5 %", "±0.2", "within a factor 2", "its sign (< 0)".
 std::string tolerance_text(const Claim& claim);
 
 }  // namespace granule::reproduce

@@ -24,8 +24,11 @@ std::string measured_text(const Claim& c) {
   return std::isfinite(c.error) ? fmt::format("{} ± {:.2g}", number(c.measured), c.error) : number(c.measured);
 }
 
-// What the verdict rests on: why it cannot be decided, or how it was measured.
-std::string basis(const Claim& c) { return c.unresolvable.empty() ? c.checked : c.unresolvable + ". " + c.checked; }
+// What the verdict rests on: why it cannot be decided (the study's reason or the rule's), and how it was measured.
+std::string basis(const Claim& c) {
+  const std::string reason = judgement(c).reason;
+  return reason.empty() ? c.checked : reason + ". " + c.checked;
+}
 
 std::string html_escape(const std::string& text) {
   std::string out;
@@ -199,8 +202,7 @@ std::string html(const fs::path& dir, const Report& report) {
 std::string claims_csv(const Report& report) {
   std::string csv =
       "study,id,statement,location,expected,measured,error,tolerance,tolerance_kind,tolerance_reason,verdict,checked,"
-      "unresolvable\n";
-  const char* kinds[] = {"relative", "absolute", "factor"};
+      "unresolvable,verdict_reason\n";
   for (const StudySection& s : report.sections) {
     for (const Claim& c : s.outcome.claims) {
       const std::vector<std::string> fields{s.study->name,
@@ -211,11 +213,12 @@ std::string claims_csv(const Report& report) {
                                             fmt::format("{:.17g}", c.measured),
                                             fmt::format("{:.17g}", c.error),
                                             fmt::format("{:.17g}", c.tolerance),
-                                            kinds[static_cast<int>(c.tolerance_kind)],
+                                            tolerance_kind_name(c.tolerance_kind),
                                             c.tolerance_reason,
                                             verdict_text(judge(c)),
                                             c.checked,
-                                            c.unresolvable};
+                                            c.unresolvable,
+                                            judgement(c).reason};
       for (std::size_t k = 0; k < fields.size(); ++k) csv += fmt::format("{}{}", k > 0 ? "," : "", csv_field(fields[k]));
       csv += "\n";
     }
@@ -231,7 +234,6 @@ std::string claims_json(const Report& report) {
                       {"wall_seconds", report.wall_seconds},
                       {"run_seconds", report.run_seconds}};
   nlohmann::json studies = nlohmann::json::array();
-  const char* kinds[] = {"relative", "absolute", "factor"};
   for (const StudySection& s : report.sections) {
     nlohmann::json claims = nlohmann::json::array();
     for (const Claim& c : s.outcome.claims) {
@@ -242,11 +244,12 @@ std::string claims_json(const Report& report) {
                         {"measured", finite_or_null(c.measured)},
                         {"error", finite_or_null(c.error)},
                         {"tolerance", c.tolerance},
-                        {"tolerance_kind", kinds[static_cast<int>(c.tolerance_kind)]},
+                        {"tolerance_kind", tolerance_kind_name(c.tolerance_kind)},
                         {"tolerance_reason", c.tolerance_reason},
                         {"verdict", verdict_text(judge(c))},
                         {"checked", c.checked},
-                        {"unresolvable", c.unresolvable}});
+                        {"unresolvable", c.unresolvable},
+                        {"verdict_reason", judgement(c).reason}});
     }
     studies.push_back({{"name", s.study->name},
                        {"title", s.study->title},

@@ -1,6 +1,7 @@
 """granule reproduce: `validation --scale tiny` writes report.md, a self-contained report.html (every
 picture inline, no external resource), claims.csv and claims.json that agree with each other; every
-verdict follows from its numbers by the documented rule (recomputed here independently); a second
+verdict, in claims.json and in every row of claims.csv, follows from its numbers by the documented
+rule (recomputed here independently), with a reason exactly when it is not resolvable; a second
 call skips the finished runs; an unknown study is refused with a clear
 message and nothing written."""
 import csv
@@ -21,16 +22,47 @@ def verdict(claim):
     e, m, s, t, kind = claim["expected"], claim["measured"], claim["error"], claim["tolerance"], claim["tolerance_kind"]
     if claim["unresolvable"] or m is None or e is None:
         return "not resolvable at this scale"
+    two_sigma = 2 * abs(s) if s is not None else 0.0  # no error: the mean alone is judged
+    if kind == "sign":
+        if e == 0:
+            return "not resolvable at this scale"
+        low, high = m - two_sigma, m + two_sigma
+        if (low > 0 and e > 0) or (high < 0 and e < 0):
+            return "agrees"
+        if (high < 0 and e > 0) or (low > 0 and e < 0):
+            return "disagrees"
+        return "not resolvable at this scale"
     if kind == "relative":
         low, high = e - t * abs(e), e + t * abs(e)
     elif kind == "absolute":
         low, high = e - t, e + t
     else:
         low, high = sorted((e / t, e * t))
-    two_sigma = 2 * abs(s) if s is not None else 0.0
-    if not low - two_sigma <= m <= high + two_sigma:
-        return "disagrees"
-    return "not resolvable at this scale" if two_sigma > high - low else "agrees"
+    if low <= m <= high:
+        return "not resolvable at this scale" if two_sigma > high - low else "agrees"
+    reaches = m + two_sigma >= low if m < low else m - two_sigma <= high
+    return "not resolvable at this scale" if reaches else "disagrees"
+
+
+def number(field):
+    """A number of claims.csv (17 digits, "nan" when missing) as claims.json has it (None when missing)."""
+    x = float(field)
+    return None if math.isnan(x) else x
+
+
+def check_csv_verdicts(path):
+    """Every row of a claims.csv: its verdict recomputed from its own mean, error and band, and a
+    reason given exactly when it is not resolvable.  Returns the rows."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        claim = {k: number(r[k]) for k in ("expected", "measured", "error", "tolerance")}
+        claim.update(tolerance_kind=r["tolerance_kind"], unresolvable=r["unresolvable"])
+        check(r["verdict"] == verdict(claim), f"{path.parent.name}/{r['id']}: csv verdict {r['verdict']} but its numbers "
+              f"give {verdict(claim)}")
+        check(bool(r["verdict_reason"]) == (r["verdict"] == "not resolvable at this scale"),
+              f"{r['id']}: verdict {r['verdict']} with the reason {r['verdict_reason']!r}")
+    return rows
 
 
 out = WORK / "report"
@@ -50,8 +82,7 @@ for c in claims:
     check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
     check(c["measured"] is not None or c["verdict"] != "agrees", f"{c['id']}: agrees without a number")
 
-with open(out / "claims.csv", newline="") as f:
-    rows = list(csv.DictReader(f))
+rows = check_csv_verdicts(out / "claims.csv")
 check([r["id"] for r in rows] == [c["id"] for c in claims], "claims.csv and claims.json list different claims")
 for r, c in zip(rows, claims):
     check(r["verdict"] == c["verdict"], f"{r['id']}: csv verdict {r['verdict']} vs json {c['verdict']}")
@@ -99,6 +130,7 @@ def tiny_study_claims(study):
     sections = [s for s in json.loads((target / "claims.json").read_text())["studies"] if s["name"] == study]
     check(len(sections) == 1, f"{study}: not one section in claims.json")
     found = [c for s in sections for c in s["claims"]]
+    check_csv_verdicts(target / "claims.csv")
     for c in found:
         check(c["verdict"] == verdict(c), f"{c['id']}: verdict {c['verdict']} but the numbers give {verdict(c)}")
         check(c["statement"] and c["location"] and c["tolerance_reason"] and c["checked"], f"{c['id']}: an empty text field")
@@ -175,7 +207,11 @@ check(decay.get("measured") is not None and abs(decay["measured"] / decay["expec
 spin = appendix.get("appendix_c.fig_c4.neighbours_spin_opposite", {})
 check(spin.get("measured") is not None and -1.0 <= spin["measured"] <= 1.0 and "pairs in contact" in spin.get("checked", ""),
       f"appendix-c: the spin claim {spin}")
-check(spin.get("verdict") in ("agrees", "disagrees") or spin.get("unresolvable", ""), f"appendix-c: the spin claim {spin}")
+check(spin.get("tolerance_kind") == "sign", f"appendix-c: the spin claim is not a sign claim: {spin}")
+check(spin.get("verdict") in ("agrees", "disagrees") or spin.get("verdict_reason", ""), f"appendix-c: the spin claim {spin}")
+trends = [appendix[f"appendix_b.e={e}.b1_density_trend"] for e in ("0.6", "0.7", "0.8", "0.9")
+          if f"appendix_b.e={e}.b1_density_trend" in appendix]
+check(all(c["tolerance_kind"] == "sign" for c in trends), f"appendix-b: a density trend that is not a sign claim: {trends}")
 
 for study, message in (("chapter9", "unknown study"),):
     target = WORK / study

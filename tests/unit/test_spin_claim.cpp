@@ -1,6 +1,7 @@
 // The Fig C.4 claim of `granule reproduce appendix-c` (reproduce/rough_shear.hpp) read from real
-// spins.h5 files written by io/spins_file.hpp: anticorrelated neighbours agree, correlated ones
-// disagree, a contact value within 2σ of zero resolves no sign, and a missing file is said.
+// spins.h5 files written by io/spins_file.hpp: the claim is a sign claim, so anticorrelated neighbours
+// agree, correlated ones disagree, a contact value within 2σ of zero resolves no sign (the verdict rule
+// says why), and a missing file is said.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -66,8 +67,19 @@ TEST(SpinClaim, CorrelatedNeighboursDisagree) {
 
 TEST(SpinClaim, ZeroWithinTwoSigmaResolvesNoSign) {
   const Claim c = spin_claim({run_with_contact_values("zero", {-0.1, 0.08, -0.05, 0.06})});
+  EXPECT_EQ(c.tolerance_kind, ToleranceKind::sign);
+  EXPECT_TRUE(c.unresolvable.empty());  // the rule, not the study, finds the sign unresolved
+  const Judgement j = judgement(c);
+  EXPECT_EQ(j.verdict, Verdict::not_resolvable);
+  EXPECT_NE(j.reason.find("within 2σ"), std::string::npos) << j.reason;
+}
+
+TEST(SpinClaim, AnticorrelationWithinTwoSigmaOfZeroDoesNotAgree) {
+  // The mean is negative but ±2σ reaches above zero: a band [−1, 0] would have agreed.
+  const Claim c = spin_claim({run_with_contact_values("weak", {-0.06, 0.03, -0.05, 0.02})});
+  EXPECT_LT(c.measured, 0.0);
+  EXPECT_GT(c.measured + 2.0 * c.error, 0.0);
   EXPECT_EQ(judge(c), Verdict::not_resolvable);
-  EXPECT_NE(c.unresolvable.find("zero within 2σ"), std::string::npos);
 }
 
 TEST(SpinClaim, TwoRunsCombineAsIndependent) {
