@@ -43,9 +43,11 @@ inline constexpr int kMostMovingWallSteps = 100000;
 
 // The delay τ ∈ [0, horizon) after the production time `now` at which a grain on `flight` (the
 // motion policy, motion/motion.hpp) along `axis`, now at `position` with `velocity`, touches the
-// moving plane while closing on it; +inf when it does not before `horizon`.
+// moving plane while closing on it; +inf when it does not before `horizon`.  Never inlined: the
+// prediction it is called from is flattened into the neighbour scan (the hot path), which this
+// rare loop would only crowd.
 template <typename Flight>
-double moving_wall_hit(const Flight& flight, int axis, double position, double velocity, const MovingPlane& plane,
+[[gnu::noinline]] double moving_wall_hit(const Flight& flight, int axis, double position, double velocity, const MovingPlane& plane,
                        double now, double horizon, double tolerance) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const ShearProtocol& wall = *plane.velocity;

@@ -46,9 +46,9 @@ struct WallParams {
   // In production the component of the velocity along `along_axis` follows this history with
   // `velocity[along_axis]` as its steady value (ShearProtocol): a wall-driven shear ramped,
   // scheduled or oscillated as the Lees–Edwards images of Chapter 4 are.  Empty: steady.
-  ShearHistory along;
+  ShearHistory along{};
   int along_axis = 0;
-  WallMotion motion;  // normal to the wall
+  WallMotion motion{};  // normal to the wall
 };
 
 }  // namespace granule
