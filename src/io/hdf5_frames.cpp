@@ -106,7 +106,7 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
     if (read_string_attribute(file.get(), "format") != format) {
       throw InputError(current + " is not a " + format + " file");
     }
-    frames_ = complete_frames(file.get());
+    frames_ = complete_frames(file.get(), keep_frames);
     file.close();
   }
   if (keep_frames > frames_) {

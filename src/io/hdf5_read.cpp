@@ -245,7 +245,9 @@ bool stored_as_integers(hid_t location, const char* name) {
   return H5Tget_class(stored.get()) == H5T_INTEGER;
 }
 
-std::int64_t complete_frames(hid_t file) {
+std::int64_t complete_frames(hid_t file) { return complete_frames(file, -1); }
+
+std::int64_t complete_frames(hid_t file, std::int64_t kept) {
   std::vector<std::string> datasets;
   try {
     datasets = frame_datasets(file);
@@ -257,9 +259,10 @@ std::int64_t complete_frames(hid_t file) {
     const std::vector<hsize_t> dims = dataset_shape(file, name.c_str());
     const hsize_t row = elements({dims.begin() + 1, dims.end()});
     // A killed run may leave one frame allocated but unwritten; more than that is damage.
-    if (row > 0 && dims[0] > 1) {
+    const hsize_t needed = kept >= 0 ? std::min<hsize_t>(dims[0], static_cast<hsize_t>(kept)) : dims[0] - 1;
+    if (row > 0 && needed > 0) {
       const Handle dataset = read_owned(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, file, "open " + dataset_text(name.c_str()));
-      require_stored(dataset.get(), elements({dims[0] - 1, row}), file, dataset_text(name.c_str()));
+      require_stored(dataset.get(), elements({needed, row}), file, dataset_text(name.c_str()));
     }
     frames = std::min(frames, dims[0]);
   }

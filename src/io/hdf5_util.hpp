@@ -157,6 +157,11 @@ bool stored_as_integers(hid_t location, const char* name);
 // middle of a frame leaves some datasets one frame longer than others (0 without any).  A dataset
 // that claims more frames than it stores (beyond the one a killed run may leave unwritten) is refused.
 std::int64_t complete_frames(hid_t file);
+// The same for a killed run's file that a resume cuts back to its first `kept` frames (those its
+// checkpoint counts, flushed before the checkpoint was published): only they must be stored.  The
+// frames after them may be in any state a kill leaves — their extent written while their chunk was
+// still in HDF5's cache.
+std::int64_t complete_frames(hid_t file, std::int64_t kept);
 // The same for the file at `path` (a `.partial` or a published file).
 std::int64_t complete_frames(const std::string& path);
 // The one-dimensional per-frame dataset `name` of a file of frames (e.g. `shear_velocity` of
