@@ -92,6 +92,15 @@ void Simulation<D>::check_invariants() const {
       const double normal_speed = std::abs(dot(d, v)) / norm(d);
       cosine = dot(d, v) / (norm(d) * norm(v));
       slack = kDistanceTolerance * contact_distance(i, fresh.partner) / normal_speed;
+    } else if (is_wall_hit(kind) && boundaries_.moving(wall_face(kind))) {
+      // A hit on a moving wall is found within the wall's gap tolerance (boundary/moving_wall_hit.hpp):
+      // two searches from different instants stop up to tolerance / closing speed apart.
+      const int face = wall_face(kind);
+      const int axis = face / 2;
+      const double delay = fresh.delay();
+      const double speed_then = motion_.velocity_at(particles_[at(i)].v, t_now_ + delay)[axis];
+      const double closing = std::abs(moving_gap_rate(boundaries_.moving_plane(face, radius_of(i)), speed_then, time() + delay));
+      slack = 2.0 * boundaries_.gap_tolerance(axis) / closing;
     }
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance) + slack;
     const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
