@@ -29,8 +29,8 @@ volatile std::sig_atomic_t interrupt_flag = 0;
 extern "C" void raise_interrupt_flag(int signal) { interrupt_flag = signal; }
 
 // While sessions run without the GIL, SIGINT raises the engine's stop flag (checked before each
-// event), as the command line's handler does; Python's handler comes back when the last session
-// of the process ends.  Sessions run from several threads share the handler and the flag, so
+// event), as the command line's handler does; Python's handler comes back when the last running
+// session of the process ends.  Sessions run from several threads share the handler and the flag, so
 // Ctrl-C stops every one of them.
 class SigintToFlag {
  public:

@@ -171,9 +171,12 @@ WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   const bool moving = boundaries_.moving(face);
   const int axis = face / 2;
   const double now = time();
-  const MovingPlane plane = boundaries_.moving_plane(face, radius_of(i));
-  const bool touching = !moving || moving_gap(plane, position_now(i)[axis], now) <= boundaries_.gap_tolerance(axis);
-  if (!touching || (moving ? moving_gap_rate(plane, before[axis], now) >= 0.0 : dot(before, k_hat) <= 0.0)) {
+  const auto leaving_moving_wall = [&] {
+    const MovingPlane plane = boundaries_.moving_plane(face, radius_of(i));
+    return moving_gap(plane, position_now(i)[axis], now) > boundaries_.gap_tolerance(axis) ||
+           moving_gap_rate(plane, before[axis], now) >= 0.0;
+  };
+  if (moving ? leaving_moving_wall() : dot(before, k_hat) <= 0.0) {
     WallHitPlan<D> stale;  // nothing to apply
     stale.particle = i;
     stale.face = face;
