@@ -63,17 +63,31 @@ struct CollisionPlan {
   double energy_before = 0.0;     // both sides, translational plus rotational
 };
 
-// A grain hitting the wall at `face`, unless it no longer moves into it.
+// A grain hitting a surface of infinite mass (a wall or an obstacle), unless it no longer moves into
+// it: its new flight and spin, and what observers are told.
 template <int D>
-struct WallHitPlan {
+struct SurfaceHit {
   std::int32_t particle = -1;
-  int face = 0;
   bool approaching = false;
   FlightState<D> flight;
   ContactSide<D> side;  // the grain after the hit
   ContactOutcome<D> outcome;
   Vec<D> velocity_before;
   double energy_before = 0.0;
+};
+
+template <int D>
+struct WallHitPlan {
+  int face = 0;
+  SurfaceHit<D> hit;
+};
+
+// A hit of fixed obstacle `obstacle`.
+template <int D>
+struct ObstacleHitPlan {
+  std::int32_t obstacle = -1;
+  Vec<D> normal;  // from the grain to the obstacle (or the periodic image of it touched)
+  SurfaceHit<D> hit;
 };
 
 }  // namespace granule

@@ -25,6 +25,7 @@
 #include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
 #include "cells/exact_divisor.hpp"
+#include "cells/obstacle_lists.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/event_plans.hpp"
 #include "engine/observer.hpp"
@@ -195,8 +196,18 @@ class Simulation {
   void commit(const CrossingPlan<D>& plan);
   CollisionPlan<D> plan_collision(std::int32_t i, std::int32_t j) const;
   bool commit(const CollisionPlan<D>& plan);  // true if a physical collision was executed
+  // A hit of a surface of infinite mass (a wall, an obstacle) moving at `surface_velocity`, normal
+  // k̂ from the grain into it, under `law`; applied (false: stale, the grain predicted again) and
+  // described to observers.
+  SurfaceHit<D> plan_surface_hit(std::int32_t i, const Vector& before, const Vector& k_hat, const CollisionLaw& law,
+                                 const Vector& surface_velocity) const;
+  bool apply(const SurfaceHit<D>& hit);
+  void describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& record) const;
   WallHitPlan<D> plan_wall_hit(std::int32_t i, int face) const;
   void commit(const WallHitPlan<D>& plan);
+  // The obstacle particle i touches now is found again from its cell's list (none: stale).
+  ObstacleHitPlan<D> plan_obstacle_hit(std::int32_t i) const;
+  void commit(const ObstacleHitPlan<D>& plan);
   // The flight of particle i through its position now with a new velocity, and storing it.
   FlightState<D> flight_through_now(std::int32_t i, const Vector& velocity) const;
   void set_flight(std::int32_t i, const FlightState<D>& flight);
@@ -250,7 +261,13 @@ class Simulation {
     return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true,
             params_.restitution_law};
   }
-  // Whether a contact of i with j (j < 0: a wall) now falls within the TC model's duration, and
+  // An obstacle is a wall of its own restitutions, round.
+  CollisionLaw obstacle_law(std::int32_t k) const {
+    const Obstacle& obstacle = params_.obstacles[static_cast<std::size_t>(k)];
+    return {obstacle.restitution, params_.tc_duration, {obstacle.tangential_restitution, std::numeric_limits<double>::infinity()},
+            true, params_.restitution_law};
+  }
+  // Whether a contact of i with j (j < 0: a wall or an obstacle) now falls within the TC model's duration, and
   // marking the contact: the two places where the TC model's history is read and written.
   bool recent_contact(const CollisionLaw& law, std::int32_t i, std::int32_t j) const;
   void mark_contact(std::int32_t i, std::int32_t j);
@@ -302,7 +319,7 @@ class Simulation {
     return !sheared || params_.length_x > 4.0 * grid_.width + 4.0 * grid_.strain_period * grid_.height;
   }
   // The first cell face particle i (now at `position`, moving at `velocity`) reaches, or the
-  // first wall it hits (the wall faces of boundary cells are never crossed).
+  // first wall or obstacle it hits (the wall faces of boundary cells are never crossed).
   Crossing next_crossing(std::int32_t i, const std::array<int, D>& cell, const Vector& position,
                          const Vector& velocity) const;
   template <typename Flight>
@@ -336,6 +353,12 @@ class Simulation {
     params_.wall = wall;
     boundaries_.set_walls(wall);
   }
+  // The obstacles of params_ listed by the cells of grid_ (the largest grain radius is σ/2).
+  ObstacleLists<D> obstacle_lists() const {
+    std::array<bool, 3> images{};
+    for (int a = 0; a < D; ++a) images[static_cast<std::size_t>(a)] = boundaries_.has_images(a);
+    return {params_.obstacles, grid_, images, {params_.length_x, params_.length_y, params_.length_z}, 0.5 * params_.diameter};
+  }
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
 
@@ -346,6 +369,8 @@ class Simulation {
   // particles fly: the boundary and motion policies (ARCHITECTURE.md, "Physics as policies").
   BoxBoundaries<D> boundaries_;
   Motion<D> motion_;
+  // The fixed obstacles each cell's grains can touch (empty without obstacles).
+  ObstacleLists<D> obstacles_;
   double shear_rate_ = 0.0;
   ShearProtocol protocol_;
   bool protocol_running_ = false;

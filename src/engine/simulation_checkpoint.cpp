@@ -87,7 +87,21 @@ std::map<std::string, double> surface_parameters(const SystemParams& p, int dime
   return out;
 }
 
+// The obstacles as one array, six values each: centre x, y, z, diameter and the restitutions in
+// force (elastic during the pre-run).
+std::vector<double> obstacle_table(const SystemParams& p) {
+  std::vector<double> table;
+  for (const Obstacle& o : p.obstacles) {
+    table.insert(table.end(), {o.centre[0], o.centre[1], o.centre[2], o.diameter, o.restitution, o.tangential_restitution});
+  }
+  return table;
+}
+
 void check_surfaces_match(const StateArchive& archive, const std::string& prefix, const SystemParams& p, int dimension) {
+  const bool recorded = archive.contains(prefix + "obstacles");
+  if (recorded != !p.obstacles.empty() || (recorded && archive.get<double>(prefix + "obstacles") != obstacle_table(p))) {
+    throw std::runtime_error("checkpoint was written with other obstacles (or their restitutions) than the configuration gives");
+  }
   const std::map<std::string, double> expected = surface_parameters(p, dimension);
   for (const auto& [name, value] : expected) {
     if (!archive.contains(prefix + name) || archive.scalar(prefix + name) != value) {
@@ -177,6 +191,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_scalar(prefix + "tc_duration", params_.tc_duration);
   visit_restitutions(params_, D, [&](const std::string& name, double value) { archive.put_scalar(prefix + name, value); });
   for (const auto& [name, value] : surface_parameters(params_, D)) archive.put_scalar(prefix + name, value);
+  if (!params_.obstacles.empty()) archive.put(prefix + "obstacles", obstacle_table(params_));
   archive.put_scalar(prefix + "grid_nx", grid_.nx);
   archive.put_scalar(prefix + "grid_ny", grid_.ny);
   archive.put_scalar(prefix + "grid_width", grid_.width);
@@ -233,6 +248,7 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
       motion_(params.gravity),
+      obstacles_(obstacle_lists()),
       protocol_(image_protocol(params)) {
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);

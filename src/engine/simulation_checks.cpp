@@ -3,6 +3,7 @@
 // is about to execute for the same reason: round-off can reorder near-simultaneous events).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,6 +18,9 @@ constexpr double kDistanceTolerance = 1e-9;
 // Round-off allowance between a stored event time and a fresh prediction of it, relative to the
 // predicted delay; grazing collisions make the root ill-conditioned, hence far above 1 ulp.
 constexpr double kDelayTolerance = 1e-6;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The ulps of a box length within which a stored position is known after re-bases and flights.
+constexpr double kRoundOffUlps = 16.0;
 
 // Throws with the parts of the message written one after another (full precision for numbers).
 template <typename... Parts>
@@ -58,6 +62,12 @@ void Simulation<D>::check_invariants() const {
         fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
       }
     }
+    for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {  // nor into an obstacle
+      const double contact = obstacle.radius + radius_of(i);
+      if (norm(r - obstacle.centre) < contact * (1.0 - kDistanceTolerance)) {
+        fail("particle ", user_id(i), " is inside obstacle ", obstacle.obstacle, ": distance ", norm(r - obstacle.centre) / contact, " of contact");
+      }
+    }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(slot(i).cell());
     for (int a = 0; a < D; ++a) {
@@ -92,6 +102,12 @@ void Simulation<D>::check_invariants() const {
       const double normal_speed = std::abs(dot(d, v)) / norm(d);
       cosine = dot(d, v) / (norm(d) * norm(v));
       slack = kDistanceTolerance * contact_distance(i, fresh.partner) / normal_speed;
+    } else if (is_wall_hit(kind) && !boundaries_.moving(wall_face(kind)) && params_.gravity[static_cast<std::size_t>(wall_face(kind) / 2)] != 0.0) {
+      // A grain resting on a floor: its position is known to a few ulps ε of L, and a parabola
+      // that barely leaves the floor closes that gap in up to √(2ε/|g|) (seen: 2·10⁻¹³).
+      const int axis = wall_face(kind) / 2;
+      const double gap = kRoundOffUlps * std::numeric_limits<double>::epsilon() * boundaries_.length(axis);
+      slack = std::sqrt(2.0 * gap / std::abs(params_.gravity[static_cast<std::size_t>(axis)]));
     } else if (is_wall_hit(kind) && boundaries_.moving(wall_face(kind))) {
       // A hit on a moving wall is found within the wall's gap tolerance (boundary/moving_wall_hit.hpp):
       // two searches from different instants stop up to tolerance / closing speed apart.
@@ -101,6 +117,17 @@ void Simulation<D>::check_invariants() const {
       const double speed_then = motion_.velocity_at(particles_[at(i)].v, t_now_ + delay)[axis];
       const double closing = std::abs(moving_gap_rate(boundaries_.moving_plane(face, radius_of(i)), speed_then, time() + delay));
       slack = 2.0 * boundaries_.gap_tolerance(axis) / closing;
+    } else if (kind == kObstacleHit) {
+      // Likewise within the obstacles' tolerance (boundary/obstacle_hit.hpp), at the closing speed then.
+      const double then = t_now_ + fresh.delay();
+      const Vector at_hit = position_at(i, then);
+      const Vector v_hit = motion_.velocity_at(particles_[at(i)].v, then);
+      double closing = kInf;
+      for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
+        const Vector d = at_hit - obstacle.centre;
+        if (std::abs(norm(d) - obstacle.radius - radius_of(i)) <= 2.0 * obstacles_.tolerance()) closing = std::abs(dot(d, v_hit)) / norm(d);
+      }
+      slack = 2.0 * obstacles_.tolerance() / closing;
     }
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance) + slack;
     const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
@@ -136,6 +163,22 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     const bool rechecked = boundaries_.moving(face) && gap > 0.0;  // a search that stopped short (moving_wall_hit.hpp)
     if (!rechecked && std::abs(gap) > kDistanceTolerance * boundaries_.length(axis)) {
       fail("wall hit of particle ", user_id(i), " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
+    }
+    return;
+  }
+  if (kind == kObstacleHit) {  // the grain must touch an obstacle its cell lists
+    double nearest = kInf;
+    double contact = 0.0;
+    for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
+      const double gap = norm(r - obstacle.centre) - obstacle.radius - radius_of(i);
+      if (std::abs(gap) < std::abs(nearest)) {
+        nearest = gap;
+        contact = obstacle.radius + radius_of(i);
+      }
+    }
+    const bool rechecked = nearest > 0.0 && nearest < kInf && params_.has_gravity();  // a search that gave up (obstacle_hit.hpp)
+    if (!rechecked && !(std::abs(nearest) <= obstacles_.tolerance() + kDistanceTolerance * contact)) {
+      fail("obstacle hit of particle ", user_id(i), " popped ", nearest, " from the nearest obstacle's contact");
     }
     return;
   }

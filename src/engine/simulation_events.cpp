@@ -3,6 +3,7 @@
 // events.  Crossings of cell faces and of the box's faces (thesis §1.4.2), collisions of grains
 // (thesis eq 1.2, Fig 1.3) and hits of flat walls (thesis Appendix A.1), the last two under the
 // collision law (physics/collision_law.hpp).
+#include "boundary/obstacle_hit.hpp"
 #include "engine/simulation.hpp"
 
 namespace granule {
@@ -163,6 +164,45 @@ bool Simulation<D>::commit(const CollisionPlan<D>& plan) {
 }
 
 template <int D>
+SurfaceHit<D> Simulation<D>::plan_surface_hit(std::int32_t i, const Vector& before, const Vector& k_hat, const CollisionLaw& law,
+                                              const Vector& surface_velocity) const {
+  // The surface is a body of infinite mass and moment of inertia moving at its own velocity, under
+  // the same law as grains (the TC model holds at surfaces too).
+  ContactSide<D> grain = contact_side(i, before);
+  ContactSide<D> surface = ContactSide<D>::wall(surface_velocity);
+  const double energy_before = observers_.empty() ? 0.0 : grain.kinetic_energy();
+  const ContactOutcome<D> outcome =
+      law.collide(grain, surface, k_hat, law.restitution_of(grain, surface, k_hat, recent_contact(law, i, -1)));
+  return {i, true, flight_through_now(i, grain.velocity), grain, outcome, before, energy_before};
+}
+
+template <int D>
+bool Simulation<D>::apply(const SurfaceHit<D>& hit) {
+  const std::int32_t i = hit.particle;
+  if (!hit.approaching) {
+    predict(i);
+    return false;
+  }
+  set_flight(i, hit.flight);
+  store_spin(i, hit.side);
+  mark_contact(i, -1);
+  ++particles_[at(i)].count;  // its pending partners' predictions are stale
+  return true;
+}
+
+template <int D>
+void Simulation<D>::describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& record) const {
+  record.time = time();
+  record.particle = user_id(hit.particle);
+  record.position = position_now(hit.particle);
+  record.velocity_before = hit.velocity_before;
+  record.velocity_after = hit.side.velocity;
+  record.energy_change = hit.side.kinetic_energy() - hit.energy_before;
+  record.restitution = hit.outcome.restitution;
+  record.mass = hit.side.mass;
+}
+
+template <int D>
 WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
   const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
   const Vector before = velocity_now(i);
@@ -176,50 +216,59 @@ WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
     return moving_gap(plane, position_now(i)[axis], now) > boundaries_.gap_tolerance(axis) ||
            moving_gap_rate(plane, before[axis], now) >= 0.0;
   };
-  if (moving ? leaving_moving_wall() : dot(before, k_hat) <= 0.0) {
-    WallHitPlan<D> stale;  // nothing to apply
-    stale.particle = i;
-    stale.face = face;
-    return stale;
-  }
-  // The wall is a body of infinite mass and moment of inertia moving at its own velocity, under
-  // the same law as grains (the TC model holds at walls too).
-  const CollisionLaw law = wall_law(face);
-  ContactSide<D> grain = contact_side(i, before);
-  ContactSide<D> wall = ContactSide<D>::wall(boundaries_.wall_velocity(face, now));
-  const double energy_before = observers_.empty() ? 0.0 : grain.kinetic_energy();
-  const ContactOutcome<D> outcome = law.collide(grain, wall, k_hat, law.restitution_of(grain, wall, k_hat, recent_contact(law, i, -1)));
-  return {i, face, true, flight_through_now(i, grain.velocity), grain, outcome, before, energy_before};
+  if (moving ? leaving_moving_wall() : dot(before, k_hat) <= 0.0) return {face, {.particle = i}};  // nothing to apply
+  return {face, plan_surface_hit(i, before, k_hat, wall_law(face), boundaries_.wall_velocity(face, now))};
 }
 
 template <int D>
 void Simulation<D>::commit(const WallHitPlan<D>& plan) {
-  const std::int32_t i = plan.particle;
-  if (!plan.approaching) {
-    predict(i);
-    return;
-  }
-  set_flight(i, plan.flight);
-  store_spin(i, plan.side);
-  mark_contact(i, -1);
-  ++particles_[at(i)].count;  // its pending partners' predictions are stale
-
+  if (!apply(plan.hit)) return;
   if (!observers_.empty()) {
     WallCollisionRecord<D> record;
-    record.time = time();
-    record.particle = user_id(i);
+    describe(plan.hit, record);
     record.axis = plan.face / 2;
     record.side = plan.face % 2;
-    record.position = position_now(i);
-    record.velocity_before = plan.velocity_before;
-    record.velocity_after = plan.side.velocity;
-    record.impulse_on_wall = plan.outcome.impulse.total();
-    record.energy_change = plan.side.kinetic_energy() - plan.energy_before;
-    record.restitution = plan.outcome.restitution;
-    record.mass = plan.side.mass;
+    record.impulse_on_wall = plan.hit.outcome.impulse.total();
     for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
   }
-  predict(i);
+  predict(plan.hit.particle);
+}
+
+template <int D>
+ObstacleHitPlan<D> Simulation<D>::plan_obstacle_hit(std::int32_t i) const {
+  const Vector r = position_now(i);
+  const Vector before = velocity_now(i);
+  // The obstacle touched is the one nearest contact among those the cell lists (two at once only
+  // where obstacles nearly touch each other); it must be touched and approached, by the search's
+  // own test, or the grain is predicted again.
+  double nearest = kNever;
+  const typename ObstacleLists<D>::Entry* touched = nullptr;
+  for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
+    const double gap = std::abs(norm(r - obstacle.centre) - (obstacle.radius + radius_of(i)));
+    if (gap < nearest) {
+      nearest = gap;
+      touched = &obstacle;
+    }
+  }
+  if (touched == nullptr || !touches_obstacle<D>(r - touched->centre, before, touched->radius + radius_of(i), obstacles_.tolerance())) {
+    return {-1, {}, {.particle = i}};  // nothing to apply
+  }
+  const Vector k_hat = (1.0 / norm(touched->centre - r)) * (touched->centre - r);
+  return {touched->obstacle, k_hat, plan_surface_hit(i, before, k_hat, obstacle_law(touched->obstacle), Vector{})};
+}
+
+template <int D>
+void Simulation<D>::commit(const ObstacleHitPlan<D>& plan) {
+  if (!apply(plan.hit)) return;
+  if (!observers_.empty()) {
+    ObstacleCollisionRecord<D> record;
+    describe(plan.hit, record);
+    record.obstacle = plan.obstacle;
+    record.normal = plan.normal;
+    record.impulse_on_obstacle = plan.hit.outcome.impulse.total();
+    for (EventObserver<D>* observer : observers_) observer->on_obstacle_collision(record);
+  }
+  predict(plan.hit.particle);
 }
 
 // The members defined in this file, for both dimensions (the class is instantiated in
@@ -231,8 +280,14 @@ template ImageEntry<2> Simulation<2>::image_entry(std::int32_t, int, int) const;
 template void Simulation<2>::commit(const CrossingPlan<2>&);
 template CollisionPlan<2> Simulation<2>::plan_collision(std::int32_t, std::int32_t) const;
 template bool Simulation<2>::commit(const CollisionPlan<2>&);
+template SurfaceHit<2> Simulation<2>::plan_surface_hit(std::int32_t, const Vec<2>&, const Vec<2>&, const CollisionLaw&,
+                                                           const Vec<2>&) const;
+template bool Simulation<2>::apply(const SurfaceHit<2>&);
+template void Simulation<2>::describe(const SurfaceHit<2>&, SurfaceContactRecord<2>&) const;
 template WallHitPlan<2> Simulation<2>::plan_wall_hit(std::int32_t, int) const;
 template void Simulation<2>::commit(const WallHitPlan<2>&);
+template ObstacleHitPlan<2> Simulation<2>::plan_obstacle_hit(std::int32_t) const;
+template void Simulation<2>::commit(const ObstacleHitPlan<2>&);
 template FlightState<3> Simulation<3>::flight_through_now(std::int32_t, const Vec<3>&) const;
 template void Simulation<3>::set_flight(std::int32_t, const FlightState<3>&);
 template CrossingPlan<3> Simulation<3>::plan_crossing(std::int32_t, EventKind) const;
@@ -240,7 +295,13 @@ template ImageEntry<3> Simulation<3>::image_entry(std::int32_t, int, int) const;
 template void Simulation<3>::commit(const CrossingPlan<3>&);
 template CollisionPlan<3> Simulation<3>::plan_collision(std::int32_t, std::int32_t) const;
 template bool Simulation<3>::commit(const CollisionPlan<3>&);
+template SurfaceHit<3> Simulation<3>::plan_surface_hit(std::int32_t, const Vec<3>&, const Vec<3>&, const CollisionLaw&,
+                                                           const Vec<3>&) const;
+template bool Simulation<3>::apply(const SurfaceHit<3>&);
+template void Simulation<3>::describe(const SurfaceHit<3>&, SurfaceContactRecord<3>&) const;
 template WallHitPlan<3> Simulation<3>::plan_wall_hit(std::int32_t, int) const;
 template void Simulation<3>::commit(const WallHitPlan<3>&);
+template ObstacleHitPlan<3> Simulation<3>::plan_obstacle_hit(std::int32_t) const;
+template void Simulation<3>::commit(const ObstacleHitPlan<3>&);
 
 }  // namespace granule

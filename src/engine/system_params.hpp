@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "boundary/obstacle.hpp"
 #include "boundary/shear_protocol.hpp"
 #include "boundary/wall.hpp"
 #include "engine/particle_record.hpp"
@@ -66,6 +67,8 @@ struct SystemParams {
   std::array<bool, 3> walls{};
   std::array<WallParams, 6> wall;  // per face 2·axis + side (0: at 0, 1: at L)
   std::array<double, 3> gravity{};  // uniform acceleration g (parabolic flights)
+  // Fixed disks or spheres the grains bounce off (none under Lees–Edwards images).
+  std::vector<Obstacle> obstacles;
   RoughnessParams roughness;
   // Events per particle between renumberings of the engine's particles along its cells (0: never;
   // Simulation::renumber).  A matter of speed only: the trajectory is the same for any value.
@@ -83,7 +86,7 @@ inline ShearProtocol image_protocol(const SystemParams& p) {
 }
 
 // The parameters of the thesis's elastic pre-run (§1.4.2): every collision elastic and smooth, with
-// grains and with walls (spins are kept but not exchanged; moving smooth walls do no work).
+// grains, with walls and with obstacles (spins are kept but not exchanged; moving smooth walls do no work).
 // Simulation::start_production switches the production values on.
 inline SystemParams elastic_prerun(SystemParams params) {
   params.restitution = 1.0;
@@ -92,6 +95,10 @@ inline SystemParams elastic_prerun(SystemParams params) {
   for (WallParams& wall : params.wall) {
     wall.restitution = 1.0;
     wall.tangential_restitution = -1.0;
+  }
+  for (Obstacle& obstacle : params.obstacles) {
+    obstacle.restitution = 1.0;
+    obstacle.tangential_restitution = -1.0;
   }
   return params;
 }
