@@ -3,7 +3,6 @@
 // distance the box allows for N sites.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "init/placement.hpp"
 
@@ -64,37 +63,68 @@ Lattice densest_lattice(const SystemParams& p) {
   return p.dimension == 3 ? densest_fcc_lattice(p) : densest_triangular_lattice(p);
 }
 
+namespace {
+
+// The centre of lattice site `site` (placement.hpp): in 2D a triangular lattice of rows offset by
+// half a column, in 3D an FCC lattice a quarter cell off the box faces; `offset` moves it a radius
+// in from the walls.
+std::array<double, 3> site_position(int dimension, const Lattice& lattice, const std::array<double, 3>& edge,
+                                    const std::array<double, 3>& offset, std::int64_t site) {
+  const auto& cells = lattice.cells;
+  std::array<double, 3> r{};
+  if (dimension == 2) {
+    const std::int64_t row = site / cells[0];
+    const std::int64_t column = site % cells[0];
+    r[0] = (static_cast<double>(column) + 0.25 + 0.5 * static_cast<double>(row % 2)) * edge[0] + offset[0];
+    r[1] = (static_cast<double>(row) + 0.5) * edge[1] + offset[1];
+    return r;
+  }
+  // The FCC basis in units of the cell edges: site = 4 (i_x + n_x (i_y + n_y i_z)) + basis.
+  constexpr double kBasis[4][3] = {{0.0, 0.0, 0.0}, {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}};
+  const std::int64_t cell = site / 4;
+  const double* basis = kBasis[site % 4];
+  const std::array<std::int64_t, 3> index{cell % cells[0], (cell / cells[0]) % cells[1], cell / (cells[0] * cells[1])};
+  for (std::size_t a = 0; a < 3; ++a) r[a] = (static_cast<double>(index[a]) + 0.25 + basis[a]) * edge[a] + offset[a];
+  return r;
+}
+
+}  // namespace
+
 bool place_on_lattice(const SystemParams& p, Random& rng, ParticleState& out) {
   // Between walls the lattice fills the centres' region, a radius in from each wall (its
-  // periodicity across the walls is then unused).
-  const SystemParams region = centre_region(p);
-  const Lattice lattice = densest_lattice(region);
-  if (lattice.spacing < p.diameter * (1.0 + 1e-9)) return false;
-  const auto& cells = lattice.cells;
-  std::array<double, 3> edge{region.length_x / static_cast<double>(cells[0]), region.length_y / static_cast<double>(cells[1]),
-                             region.length_z / static_cast<double>(cells[2])};
+  // periodicity across the walls is then unused).  Sites inside obstacles are not used: the
+  // lattice then has as many more sites as it needs.
+  SystemParams region = centre_region(p);
+  const std::array<bool, 3> images{!p.walls[0], !p.walls[1], !p.walls[2]};
+  const std::array<double, 3> box{p.length_x, p.length_y, p.length_z};
   std::array<double, 3> offset{};
   for (std::size_t a = 0; a < 3; ++a) offset[a] = p.walls[a] ? 0.5 * p.diameter : 0.0;
-  std::vector<std::int64_t> sites(static_cast<std::size_t>(lattice.sites()));
-  std::iota(sites.begin(), sites.end(), 0);
-  // The FCC basis in units of the cell edges.
-  constexpr double kBasis[4][3] = {{0.0, 0.0, 0.0}, {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}};
+  std::vector<std::int64_t> sites;
+  Lattice lattice;
+  std::array<double, 3> edge{};
+  for (std::int64_t wanted = p.particles;;) {
+    region.particles = wanted;
+    lattice = densest_lattice(region);
+    if (lattice.spacing < p.diameter * (1.0 + 1e-9)) return false;
+    const auto& cells = lattice.cells;
+    edge = {region.length_x / static_cast<double>(cells[0]), region.length_y / static_cast<double>(cells[1]),
+            region.length_z / static_cast<double>(cells[2])};
+    sites.clear();
+    for (std::int64_t site = 0; site < lattice.sites(); ++site) {
+      if (p.obstacles.empty() ||
+          !overlaps_obstacle(p.obstacles, site_position(p.dimension, lattice, edge, offset, site), p.diameter, p.dimension, images, box)) {
+        sites.push_back(site);
+      }
+    }
+    const auto free = static_cast<std::int64_t>(sites.size());
+    if (free >= p.particles) break;
+    wanted += p.particles - free;
+  }
   for (std::size_t k = 0; k < static_cast<std::size_t>(p.particles); ++k) {  // partial Fisher–Yates
     const std::size_t pick = k + static_cast<std::size_t>(rng.below(sites.size() - k));
     std::swap(sites[k], sites[pick]);
-    if (p.dimension == 2) {
-      const std::int64_t row = sites[k] / cells[0];
-      const std::int64_t column = sites[k] % cells[0];
-      out.x[k] = (static_cast<double>(column) + 0.25 + 0.5 * static_cast<double>(row % 2)) * edge[0] + offset[0];
-      out.y[k] = (static_cast<double>(row) + 0.5) * edge[1] + offset[1];
-    } else {  // site = 4 (i_x + n_x (i_y + n_y i_z)) + basis; a quarter cell off the box faces
-      const std::int64_t cell = sites[k] / 4;
-      const double* basis = kBasis[sites[k] % 4];
-      const std::array<std::int64_t, 3> index{cell % cells[0], (cell / cells[0]) % cells[1], cell / (cells[0] * cells[1])};
-      for (int a = 0; a < 3; ++a) {
-        out.position(a)[k] = (static_cast<double>(index[a]) + 0.25 + basis[a]) * edge[a] + offset[static_cast<std::size_t>(a)];
-      }
-    }
+    const std::array<double, 3> r = site_position(p.dimension, lattice, edge, offset, sites[k]);
+    for (int a = 0; a < p.dimension; ++a) out.position(a)[k] = r[static_cast<std::size_t>(a)];
   }
   return true;
 }

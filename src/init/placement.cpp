@@ -93,6 +93,10 @@ bool place_randomly(const SystemParams& p, Random& rng, ParticleState& out) {
     for (int a = 0; a < d; ++a) r[a] = coordinate_in_box(p, a, sigma, rng.uniform());
     for (int a = 0; a < d; ++a) cell[a] = std::min(grid.count[a] - 1, static_cast<int>(r[a] / grid.width[a]));
     if (overlaps_placed(p, grid, out, r, sigma, cell)) continue;
+    if (!p.obstacles.empty() && overlaps_obstacle(p.obstacles, r, sigma, d, {!p.walls[0], !p.walls[1], !p.walls[2]},
+                                                  {p.length_x, p.length_y, p.length_z})) {
+      continue;
+    }
     for (int a = 0; a < d; ++a) out.position(a)[placed] = r[a];
     const std::size_t c = grid.cell_of(cell);
     grid.next[placed] = grid.head[c];

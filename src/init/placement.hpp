@@ -2,7 +2,8 @@
 // (thesis §1.4.2: uniformly distributed): random sequential addition, or a lattice with random
 // vacancies for dense systems (triangular in 2D, face-centred cubic in 3D).  Along a wall axis
 // (params.walls) every centre stays at least its own radius from each wall, and no periodic image
-// is seen across the walls.  Per-particle
+// is seen across the walls; no centre is closer to an obstacle than contact (boundary/obstacle.hpp:
+// random trials inside one are rejected, lattice sites inside one are not used).  Per-particle
 // diameters (polydisperse systems) come in out.diameter; otherwise every σ = params.diameter,
 // which is always the largest diameter.  Scratch memory is O(N) at any packing fraction.
 #pragma once

@@ -12,6 +12,7 @@
 #include "cells/cell_grid.hpp"
 #include "events/event_slot.hpp"
 #include "io/config_geometry.hpp"
+#include "io/config_obstacles.hpp"
 #include "io/config_reader.hpp"
 #include "io/config_restitution.hpp"
 #include "io/config_roughness.hpp"
@@ -25,7 +26,7 @@ namespace {
 
 const ConfigSchema& schema() {
   static const ConfigSchema keys = {
-      {"", {"seed"}},
+      {"", {"seed", "obstacles"}},
       {"system",
        {"dimension", "particles", "area_fraction", "packing_fraction", "diameter", "diameters", "masses", "box",
         "restitution", "restitution_law", "elastic_below", "viscoelastic_constant", "tc_duration", "gravity",
@@ -110,6 +111,7 @@ RunConfig resolve(const toml::table& root) {
   }
   resolve_roughness(in, c);
   resolve_gravity(in, c);
+  resolve_obstacles(root, c);
   c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
 
   c.until_collisions_per_particle = collision_count_setting(in, "run.until_collisions_per_particle", n);
@@ -316,7 +318,7 @@ std::string to_toml(const RunConfig& c) {
   // that widens (a written number would be read as a fixed range).
   out += k.widen_max_length ? fmt::format("# max_length: default {:.17g}, widened as long paths come\n", k.max_length)
                             : fmt::format("max_length = {:.17g}\n", k.max_length);
-  return out;
+  return out + obstacles_to_toml(c);
 }
 
 std::string default_example_toml() {
