@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -79,6 +81,19 @@ std::vector<std::string> describe_surfaces(const RunConfig& config) {
     }
   }
   if (s.has_gravity()) lines.push_back(fmt::format("gravity g = {}", vector_text(s.gravity)));
+  if (!s.obstacles.empty()) {
+    const Obstacle& first = s.obstacles.front();
+    const bool alike = std::all_of(s.obstacles.begin(), s.obstacles.end(), [&](const Obstacle& o) {
+      return o.diameter == first.diameter && o.restitution == first.restitution && o.tangential_restitution == first.tangential_restitution;
+    });
+    lines.push_back(s.obstacles.size() == 1 || alike
+                        ? fmt::format("{} fixed obstacle{} of diameter {} (e_o = {}, β_o = {}){}", s.obstacles.size(),
+                                      s.obstacles.size() == 1 ? "" : "s", first.diameter, first.restitution, first.tangential_restitution,
+                                      s.obstacles.size() == 1 ? fmt::format(" at ({}, {}{})", first.centre[0], first.centre[1],
+                                                                            s.dimension == 3 ? fmt::format(", {}", first.centre[2]) : "")
+                                                              : "")
+                        : fmt::format("{} fixed obstacles of diameters, restitutions and roughnesses of their own", s.obstacles.size()));
+  }
   return lines;
 }
 

@@ -10,6 +10,7 @@
 
 #include "io/config_reader.hpp"
 #include "io/input_ranges.hpp"
+#include "io/system_checks.hpp"
 
 namespace granule {
 
@@ -22,8 +23,6 @@ constexpr std::size_t kMostObstacles = 1'000'000;
 
 std::string entry_name(std::size_t k) { return fmt::format("{}[{}]", kKey, k); }
 
-double box_length(const SystemParams& s, std::size_t axis) { return axis == 0 ? s.length_x : axis == 1 ? s.length_y : s.length_z; }
-
 // A number of entry k, in `range`, or nothing when the key is absent.
 std::optional<double> number_of(const toml::table& entry, std::size_t k, const char* key, const NumberRange& range,
                                 const std::string& why = {}) {
@@ -35,24 +34,6 @@ std::optional<double> number_of(const toml::table& entry, std::size_t k, const c
                                   range.text(), why)};
   }
   return value;
-}
-
-// An obstacle must lie in the box, and along a periodic axis be narrower than the box less a grain
-// (so that it never touches its own image, and only the images next to the box are listed).
-void check_place(const Obstacle& o, const SystemParams& s, const std::string& where) {
-  for (std::size_t a = 0; a < static_cast<std::size_t>(s.dimension); ++a) {
-    const double length = box_length(s, a);
-    const bool periodic = !s.walls[a];
-    if (!(o.centre[a] >= 0.0 && (periodic ? o.centre[a] < length : o.centre[a] <= length))) {
-      throw ConfigError{fmt::format("{} has its centre at {} = {}, outside the box: allowed [0, {}{}", where, "xyz"[a], o.centre[a],
-                                    length, periodic ? ") (periodic)" : "]")};
-    }
-    if (periodic && !(o.diameter + s.diameter < length)) {
-      throw ConfigError{fmt::format("{} has diameter {}: along the periodic axis {} it must be below L_{} − σ = {}, so that a "
-                                    "grain passes between the obstacle and its image", where, o.diameter, "xyz"[a], "xyz"[a],
-                                    length - s.diameter)};
-    }
-  }
 }
 
 }  // namespace
@@ -172,8 +153,10 @@ void resolve_obstacles(const toml::table& root, RunConfig& c) {
       Obstacle& o = given[m];
       o.restitution = e;
       o.tangential_restitution = beta;
-      if (!kDiameters.contains(o.diameter)) throw ConfigError{fmt::format("{}: obstacle {} has diameter {}, not > 0", where, m + 1, o.diameter)};
-      check_place(o, s, given.size() == 1 && !entry.get("file") ? where : fmt::format("{}: obstacle {} of the file", where, m + 1));
+      // The rules a snapshot's obstacles are checked by too: in the box, narrower than it less a grain
+      // along a periodic axis (never touching its own image), a diameter > 0.
+      const std::string name = entry.get("file") ? fmt::format("{}: obstacle {} of the file", where, m + 1) : where;
+      if (const std::vector<std::string> problems = obstacle_problems(o, s, name); !problems.empty()) throw ConfigError{problems.front()};
       if (s.obstacles.size() == kMostObstacles) throw ConfigError{fmt::format("more than {} obstacles", kMostObstacles)};
       s.obstacles.push_back(o);
     }

@@ -11,6 +11,11 @@ namespace granule {
 
 using namespace h5;
 
+namespace {
+// A row of dataset `obstacles`: centre x, y, z (0 in 2D), diameter, restitution, tangential restitution.
+constexpr std::size_t kObstacleColumns = 6;
+}  // namespace
+
 void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
   if (p.roughness.rough) {
     write_attribute(f, "tangential_restitution", H5T_NATIVE_DOUBLE, &p.roughness.tangential_restitution);
@@ -43,6 +48,13 @@ void write_grains_walls_gravity_attributes(hid_t f, const SystemParams& p) {
     if (!schedule.empty()) write_dataset(f, "wall_schedule", {schedule.size() / 3, 3}, schedule);
   }
   if (p.has_gravity()) write_attribute(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+  if (!p.obstacles.empty()) {
+    std::vector<double> rows;
+    for (const Obstacle& o : p.obstacles) {
+      rows.insert(rows.end(), {o.centre[0], o.centre[1], o.centre[2], o.diameter, o.restitution, o.tangential_restitution});
+    }
+    write_dataset(f, "obstacles", {p.obstacles.size(), kObstacleColumns}, rows);
+  }
   const RestitutionLaw& law = p.restitution_law;
   if (law.kind == RestitutionKind::kThreshold) {
     write_string_attribute(f, "restitution_law", "threshold");
@@ -94,6 +106,16 @@ void read_grains_walls_gravity_attributes(hid_t f, SystemParams& p) {
     }
   }
   if (has_attribute(f, "gravity")) read_attribute_values(f, "gravity", H5T_NATIVE_DOUBLE, p.gravity.data(), 3);
+  if (has_link(f, "obstacles")) {
+    const std::vector<double> rows = read_values(f, "obstacles");
+    if (rows.empty() || rows.size() % kObstacleColumns != 0) {
+      throw InputError(file_name(f) + ": dataset obstacles must have 6 columns (x, y, z, diameter, restitution, "
+                       "tangential_restitution) and at least one row");
+    }
+    for (std::size_t k = 0; k < rows.size(); k += kObstacleColumns) {
+      p.obstacles.push_back({{rows[k], rows[k + 1], rows[k + 2]}, rows[k + 3], rows[k + 4], rows[k + 5]});
+    }
+  }
   if (has_attribute(f, "restitution_law")) {
     const std::string law = read_string_attribute(f, "restitution_law");
     if (law == "threshold") {

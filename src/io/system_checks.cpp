@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -56,7 +58,56 @@ void require_each(std::vector<std::string>& problems, const std::string& name, c
   }
 }
 
+// The first grain whose centre is closer to an obstacle (or a periodic image of one) than contact,
+// less 10⁻⁹ of it: grains sorted by x, each obstacle tested against those within its reach in x.
+void grain_in_obstacle(std::vector<std::string>& problems, const ParticleState& p, const SystemParams& s) {
+  std::vector<std::size_t> by_x(p.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return p.x[a] < p.x[b]; });
+  const std::array<bool, 3> images{!s.walls[0], !s.walls[1], !s.walls[2]};
+  const std::array<double, 3> lengths{s.length_x, s.length_y, s.length_z};
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    const Obstacle& o = s.obstacles[k];
+    const double reach = 0.5 * (o.diameter + s.diameter);
+    for (const double shift : images[0] ? std::vector<double>{-s.length_x, 0.0, s.length_x} : std::vector<double>{0.0}) {
+      const auto first = std::lower_bound(by_x.begin(), by_x.end(), o.centre[0] + shift - reach,
+                                          [&](std::size_t i, double x) { return p.x[i] < x; });
+      for (auto it = first; it != by_x.end() && p.x[*it] <= o.centre[0] + shift + reach; ++it) {
+        const std::size_t i = *it;
+        std::array<double, 3> r{p.x[i], p.y[i], p.dimension == 3 ? p.z[i] : 0.0};
+        const double contact = 0.5 * (o.diameter + p.diameter_of(i, s.diameter));
+        if (distance_squared_to(o, r, p.dimension, images, lengths) < contact * contact * (1.0 - 2e-9)) {
+          problems.push_back(fmt::format("particle {} is inside obstacle {} (distance {} of contact)", i, k,
+                                         std::sqrt(distance_squared_to(o, r, p.dimension, images, lengths)) / contact));
+          return;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> obstacle_problems(const Obstacle& o, const SystemParams& s, const std::string& name) {
+  std::vector<std::string> problems;
+  require(problems, "diameter of " + name, o.diameter, NumberRange{0.0, kUnbounded, true, true});
+  require(problems, "restitution of " + name, o.restitution, kRestitutions);
+  require(problems, "tangential restitution of " + name, o.tangential_restitution, kTangentialRestitutions);
+  const double lengths[3] = {s.length_x, s.length_y, s.length_z};
+  for (std::size_t a = 0; a < static_cast<std::size_t>(s.dimension == 3 ? 3 : 2); ++a) {
+    const bool periodic = !s.walls[a];
+    if (!(o.centre[a] >= 0.0 && (periodic ? o.centre[a] < lengths[a] : o.centre[a] <= lengths[a]))) {
+      problems.push_back(fmt::format("{} has its centre at {} = {}, outside the box: allowed [0, {}{}", name, kAxes[a], o.centre[a],
+                                     lengths[a], periodic ? ") (periodic)" : "]"));
+    }
+    if (periodic && !(o.diameter + s.diameter < lengths[a])) {
+      problems.push_back(fmt::format("{} has diameter {}: along the periodic axis {} it must be below L_{} − σ = {}, so that a "
+                                     "grain passes between the obstacle and its image", name, o.diameter, kAxes[a], kAxes[a],
+                                     lengths[a] - s.diameter));
+    }
+  }
+  return problems;
+}
 
 std::vector<std::string> system_problems(const SystemParams& s) {
   std::vector<std::string> problems;
@@ -98,6 +149,9 @@ std::vector<std::string> system_problems(const SystemParams& s) {
     wall_motion_problems(problems, wall, s.wall[face].motion, face / 2 == 0 ? s.length_x : face / 2 == 1 ? s.length_y : s.length_z,
                          s.diameter);
   }
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    for (std::string& problem : obstacle_problems(s.obstacles[k], s, fmt::format("obstacle {}", k))) problems.push_back(std::move(problem));
+  }
   return problems;
 }
 
@@ -119,6 +173,7 @@ std::vector<std::string> particle_problems(const ParticleState& p, const SystemP
   if (p.rough()) {
     for (int k = 0; k < p.spin_components(); ++k) require_each(problems, "angular velocity", p.spin(k), any);
   }
+  if (!s.obstacles.empty() && problems.empty()) grain_in_obstacle(problems, p, s);
   return problems;
 }
 

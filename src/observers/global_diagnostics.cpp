@@ -29,11 +29,14 @@ DiagnosticsSample diagnostics_layout(const SystemParams& params) {
   for (std::size_t face = 0; face < layout.walls.size(); ++face) {
     if (params.walls[face / 2]) layout.walls[face] = WallFaceSample{};
   }
+  if (!params.obstacles.empty()) {
+    layout.obstacles = ObstacleForcesSample{params.dimension == 3, {}, std::vector<ObstacleForce>(params.obstacles.size())};
+  }
   return layout;
 }
 
 std::optional<DiagnosticsSample> diagnostics_layout_of(const std::vector<std::string>& names) {
-  const auto named = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  const auto named = [&](const std::string& name) { return std::find(names.begin(), names.end(), name) != names.end(); };
   DiagnosticsSample layout;
   if (named("rotational_temperature")) layout.rotation = RotationSample{};
   if (named("potential_energy")) layout.gravity = GravitySample{};
@@ -43,6 +46,10 @@ std::optional<DiagnosticsSample> diagnostics_layout_of(const std::vector<std::st
     for_each_wall_column(face, probe, [&](const char* name, double&) { first = first ? first : name; });
     if (named(first)) layout.walls[static_cast<std::size_t>(face)] = probe;
   }
+  if (named("obstacles_drag")) {
+    layout.obstacles = ObstacleForcesSample{named("obstacles_force_z"), {}, {}};
+    while (named("obstacle" + std::to_string(layout.obstacles->each.size()) + "_drag")) layout.obstacles->each.emplace_back();
+  }
   std::vector<std::string> columns;
   for_each_column(layout, [&](const char* name, double&) { columns.emplace_back(name); });
   if (columns != names) return std::nullopt;
@@ -51,7 +58,7 @@ std::optional<DiagnosticsSample> diagnostics_layout_of(const std::vector<std::st
 
 template <int D>
 GlobalDiagnostics<D>::GlobalDiagnostics(const SystemParams& params, const FieldGrid& cells)
-    : params_(params), frame_{params.length_x, params.length_y, params.shear_velocity}, grid_(cells), walls_(params) {}
+    : params_(params), frame_{params.length_x, params.length_y, params.shear_velocity}, grid_(cells), walls_(params), obstacles_(params) {}
 
 template <int D>
 void GlobalDiagnostics<D>::on_collision(const CollisionRecord<D>& record) {
@@ -78,6 +85,7 @@ void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
   interval_start_ = t;
   interval_collisions_ = collisions;
   walls_.clear();
+  obstacles_.clear();
 }
 
 template <int D>
@@ -191,6 +199,7 @@ DiagnosticsSample GlobalDiagnostics<D>::sample(const StateBlocks& state, double 
     out.gravity = GravitySample{potential, out.kinetic_energy + 0.5 * spin_energy + potential};
   }
   out.walls = walls_.sample(dt);
+  if (!params_.obstacles.empty()) out.obstacles = obstacles_.sample(dt);
   restart_interval(t, collisions);
   return out;
 }
@@ -202,6 +211,7 @@ void GlobalDiagnostics<D>::save(StateArchive& archive, const std::string& prefix
   archive.put_scalar(prefix + "interval_start", interval_start_);
   archive.put_integer(prefix + "interval_collisions", interval_collisions_);
   if (params_.has_walls()) walls_.save(archive, prefix);
+  if (!params_.obstacles.empty()) obstacles_.save(archive, prefix);
 }
 
 template <int D>
@@ -211,6 +221,7 @@ void GlobalDiagnostics<D>::restore(const StateArchive& archive, const std::strin
   interval_start_ = archive.scalar(prefix + "interval_start");
   interval_collisions_ = archive.integer(prefix + "interval_collisions");
   if (params_.has_walls()) walls_.restore(archive, prefix);
+  if (!params_.obstacles.empty()) obstacles_.restore(archive, prefix);
 }
 
 template class GlobalDiagnostics<2>;

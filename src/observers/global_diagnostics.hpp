@@ -6,7 +6,8 @@
 // of Chapter 4 (analysis/flow_classification.hpp).  Collisional quantities are accumulated from
 // every collision record over the sampling interval.  Runs with rough grains, gravity or walls
 // add columns: the rotational temperature, the potential and total energy, and what each wall took
-// and gave (observers/wall_stress.hpp); runs without them write none of these columns.
+// and gave (observers/wall_stress.hpp), the force on each obstacle (observers/obstacle_forces.hpp);
+// runs without them write none of these columns.
 #pragma once
 
 #include <array>
@@ -22,6 +23,7 @@
 #include "engine/observer.hpp"
 #include "archive/state_archive.hpp"
 #include "engine/system_params.hpp"
+#include "observers/obstacle_forces.hpp"
 #include "observers/wall_stress.hpp"
 
 namespace granule {
@@ -60,6 +62,7 @@ struct DiagnosticsSample {
   std::optional<RotationSample> rotation;  // rough grains only
   std::optional<GravitySample> gravity;    // with gravity only
   std::array<std::optional<WallFaceSample>, 6> walls;  // the faces with a wall (2·axis + side)
+  std::optional<ObstacleForcesSample> obstacles;       // with obstacles only
 };
 
 // The columns of the time series, in their order (timeseries.csv, checkpoints).
@@ -92,6 +95,7 @@ void for_each_column(Sample& s, Visit&& visit) {
   for (int face = 0; face < 6; ++face) {
     if (s.walls[static_cast<std::size_t>(face)]) for_each_wall_column(face, *s.walls[static_cast<std::size_t>(face)], visit);
   }
+  if (s.obstacles) for_each_obstacle_column(*s.obstacles, visit);
 }
 
 // The column layout of a run with `params` (its optional groups present, values 0).
@@ -112,6 +116,7 @@ class GlobalDiagnostics final : public EventObserver<D> {
 
   void on_collision(const CollisionRecord<D>& record) override;
   void on_wall_collision(const WallCollisionRecord<D>& record) override;
+  void on_obstacle_collision(const ObstacleCollisionRecord<D>& record) override { obstacles_.add(record); }
   // An empty sample with this run's columns (for readers of checkpoints).
   DiagnosticsSample layout() const { return diagnostics_layout(params_); }
   // Measure the configuration `state` at time t (collisions since production started) and
@@ -137,6 +142,7 @@ class GlobalDiagnostics final : public EventObserver<D> {
   double interval_start_ = 0.0;
   std::int64_t interval_collisions_ = 0;
   WallStress<D> walls_;
+  ObstacleForces<D> obstacles_;
 };
 
 }  // namespace granule

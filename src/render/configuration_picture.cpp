@@ -249,6 +249,15 @@ RasterImage render_configuration(const ConfigurationScene& scene, const PictureO
     cairo_fill(cr);
   }
   if (scene.walls[0] || scene.walls[1]) draw_walls(cr, scene, map, std::max(2.0, width / 400.0));
+  cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
+  for (const Obstacle& obstacle : scene.obstacles) {
+    const double radius = 0.5 * obstacle.diameter;
+    for_each_visible_image(obstacle.centre[0], obstacle.centre[1], radius, scene, [&](double x, double y) {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, map.px(x), map.py(y), radius * map.scale_x, 0.0, 2.0 * std::numbers::pi);
+    });
+    cairo_fill(cr);
+  }
   if (options.arrows) draw_arrows(cr, fields, map, std::max(1.0, width / 800.0));
   if (options.legend) draw_legend(cr, options, width, low, high);
   if (!options.caption.empty()) {

@@ -4,7 +4,7 @@
 // (analysis/named_cell_fields.hpp), with the coarse-grained velocity field V(r) of §1.4.3 drawn as
 // arrows from the cell centres.  Disks crossing the box edges are drawn with their periodic /
 // Lees–Edwards images (thesis §1.4.2), so a picture tiles like the system; flat walls (Fig C.5) are
-// drawn as lines along the faces they stand on.
+// drawn as lines along the faces they stand on, fixed obstacles as grey disks with their images.
 #pragma once
 
 #include <array>
@@ -35,6 +35,7 @@ struct ConfigurationScene {
   std::array<bool, 2> walls{};     // flat walls at both ends of x, of y (SystemParams::walls)
   // How far each wall (faces x0, x1, y0, y1) has moved into the box (a vibrated floor, a piston).
   std::array<double, 4> wall_shift{};
+  std::vector<Obstacle> obstacles{};  // fixed obstacles, drawn grey (SystemParams::obstacles)
 };
 
 struct PictureOptions {

@@ -18,7 +18,7 @@ RasterImage render_snapshot_picture(const SnapshotRead& snapshot, const PictureO
     if (motion.moves()) shift[face] = motion.velocity().integral(0.0, snapshot.frame.clock.time);
   }
   return render_configuration(
-      {snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset, {s.walls[0], s.walls[1]}, shift}, options);
+      {snapshot.frame.particles, s.diameter, box, snapshot.frame.shear_offset, {s.walls[0], s.walls[1]}, shift, s.obstacles}, options);
 }
 
 void choose_spin_coloring(PictureOptions& options, bool coloring_chosen, const SnapshotMetadata& metadata) {
