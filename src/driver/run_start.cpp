@@ -7,6 +7,7 @@
 
 #include "boundary/shear_protocol.hpp"
 #include "io/snapshot_file.hpp"
+#include "io/system_checks.hpp"
 
 namespace granule::driver {
 
@@ -50,6 +51,13 @@ ParticleState state_from_run(const RunConfig& config) {
   if (sizes.diameter != read.frame.particles.diameter || sizes.mass != read.frame.particles.mass) {
     throw ConfigError(fmt::format("initial.from = \"{}\" holds other particle diameters or masses than "
                                   "system.diameters / system.masses / seed give", from.directory));
+  }
+  // This run's obstacles may stand where the frame's grains are.
+  if (!ours.obstacles.empty()) {
+    if (const std::vector<std::string> problems = particle_problems(read.frame.particles, ours); !problems.empty()) {
+      throw ConfigError(fmt::format("initial.from = \"{}\": {}: [[obstacles]] must leave the frame's grains outside",
+                                    from.directory, problems.front()));
+    }
   }
   return read.frame.particles;
 }

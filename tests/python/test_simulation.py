@@ -188,6 +188,32 @@ def test_speed_dependent_restitution_from_a_dict(small_config):
         granule.Simulation({**small_config, "system": {**small_config["system"], "viscoelastic_constant": 0.1}})
 
 
+def test_obstacles_from_a_dict(small_config):
+    """Obstacles run from Python as from TOML (a list of dicts is [[obstacles]]): no grain ever
+    enters one, and the time series has the drag and lift on each, the drag along the flow."""
+    config = {**small_config,
+              "system": {"particles": 300, "diameter": 0.02, "box": [2.0, 1.0], "restitution": 0.95,
+                         "gravity": [0.3, 0.0]},
+              "boundary": {"kind": "walls", "wall_axes": ["y"]},
+              "obstacles": [{"centre": [0.5, 0.5], "diameter": 0.3, "restitution": 0.9},
+                            {"centre": [1.5, 0.0], "diameter": 0.2}],
+              "output": {"every_time": 0.5},
+              "initial": {"temperature": 0.1, "equilibrate": 0}}
+    sim = granule.Simulation(config)
+    assert "[[obstacles]]" in sim.config_toml
+    centres = np.array([[0.5, 0.5], [1.5, 0.0]])
+    for stop in (1.0, 2.0, 3.0):
+        sim.run(until_time=stop)
+        for centre, diameter in zip(centres, (0.3, 0.2)):
+            distance = np.linalg.norm(sim.positions - centre, axis=1)
+            assert float(np.min(distance)) >= 0.5 * (diameter + 0.02) * (1.0 - 1e-9)
+    series = sim.timeseries
+    assert {"obstacle0_drag", "obstacle0_lift", "obstacle1_collisions", "obstacles_drag"} <= set(series)
+    assert float(np.mean(series["obstacle0_drag"][1:])) > 0.0
+    with pytest.raises(ValueError, match=r"obstacles\[1\].diameter"):
+        granule.Simulation({**config, "obstacles": [config["obstacles"][0], {"centre": [1.0, 0.5], "diameter": -1.0}]})
+
+
 def test_a_vibrated_floor_from_a_dict(small_config):
     """A wall moving normal to itself runs from Python as from TOML: the floor h(t) = A (1 − cos 2πft)
     stays below every grain, and a bed on it is kept moving (the floor does work)."""
