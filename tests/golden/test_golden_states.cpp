@@ -82,6 +82,7 @@ struct GoldenCase {
     double floor_amplitude = 0.0, floor_frequency = 0.0;  // A > 0: the floor y0 vibrates (WallMotion)
   } surfaces{};
   RestitutionLaw speed_law{};  // how ẽ (and e_w) depend on the impact speed in production
+  std::vector<Obstacle> obstacles{};  // fixed obstacles, with their production restitutions
 };
 
 // The run of a case, its engine renumbering its particles every `renumber_every` events per
@@ -121,6 +122,7 @@ GoldenRun final_state(const GoldenCase& k, double renumber_every) {
   p.wall[2].velocity[0] = -0.5 * k.surfaces.wall_velocity;
   p.wall[3].velocity[0] = 0.5 * k.surfaces.wall_velocity;
   p.wall[2].motion = {k.surfaces.floor_amplitude, k.surfaces.floor_frequency, {}};
+  p.obstacles = k.obstacles;
   if (k.protocol) {
     const double u0 = p.walls[1] ? k.surfaces.wall_velocity : k.shear_velocity;
     ShearHistory history;
@@ -225,7 +227,12 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"vibrated_floor_disks_tc", 1500, 0.15, 0.9, 0.0, 1e-6, 30.0, 41, 0xcd41943094150aaaULL, false, 2, 1.0, -1.0,
                                  {{false, true, false}, {0.0, -1.0, 0.0}, 0.9, -1.0, 0.0, 0.01, 3.0}},
                       GoldenCase{"driven_walls_rough_spheres", 1500, 0.2, 0.9, 0.0, 1e-6, 30.0, 42, 0xe3d3b50856b01b20ULL, true, 3, 1.0, 0.4,
-                                 {{false, true, false}, {}, 0.9, 0.3, 4.0}}),
+                                 {{false, true, false}, {}, 0.9, 0.3, 4.0}},
+                      // A flow past obstacles: gravity along x between y walls, three obstacles
+                      // (rough, smooth, and one seen through the periodic x face).
+                      GoldenCase{"flow_past_obstacles_tc", 1500, 0.15, 0.9, 0.0, 1e-6, 30.0, 43, 0x3478975f24b705c4ULL, false, 2, 1.0, -1.0,
+                                 {{false, true, false}, {0.5, 0.0, 0.0}, 0.9, 0.2}, {},
+                                 {{{0.3, 0.5, 0.0}, 0.15, 0.8, 0.3}, {{0.7, 0.2, 0.0}, 0.1, 0.9, -1.0}, {{0.0, 0.8, 0.0}, 0.12, 1.0, -1.0}}}),
     [](const ::testing::TestParamInfo<GoldenCase>& run) { return std::string(run.param.name); });
 
 }  // namespace
