@@ -69,10 +69,10 @@ template <int D>
 struct SurfaceHit {
   std::int32_t particle = -1;
   bool approaching = false;
-  FlightState<D> flight;
-  ContactSide<D> side;  // the grain after the hit
-  ContactOutcome<D> outcome;
-  Vec<D> velocity_before;
+  FlightState<D> flight{};
+  ContactSide<D> side{};  // the grain after the hit
+  ContactOutcome<D> outcome{};
+  Vec<D> velocity_before{};
   double energy_before = 0.0;
 };
 
