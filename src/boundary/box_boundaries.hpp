@@ -3,15 +3,20 @@
 // periodic), or a flat wall at each end (thesis Appendix A.1).  It answers, for the engine, every
 // question that depends on it: where the image across a face sits and how fast it moves, whether a
 // cell at the edge of the grid has neighbours beyond it, the nearest image of a partner, how a
-// position is wrapped into the box, when a grain hits a wall, and what entering from an image does.
+// position is wrapped into the box, when a grain hits a surface — a wall, or a fixed obstacle, which
+// may stand anywhere — and what the contact is, and what entering from an image does.
 // Flow along x, gradient along y, z plainly periodic (boundary/shear_frame.hpp).
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <vector>
 
 #include "boundary/moving_wall_hit.hpp"
+#include "boundary/obstacle_hit.hpp"
+#include "boundary/obstacle_lists.hpp"
 #include "boundary/periodic_wrap.hpp"
 #include "boundary/shear_frame.hpp"
 #include "boundary/wall.hpp"
@@ -57,6 +62,19 @@ class BoxBoundaries {
     set_walls(wall);
   }
 
+  // The surfaces a grain can hit: the walls at faces 0 … 5 (2·axis + side), and the obstacles.
+  static constexpr int kObstacles = 6;
+
+  // The fixed obstacles and the engine's cells that list them (ObstacleLists), for grains of radius
+  // at most `largest_grain_radius`.
+  void set_obstacles(const std::vector<Obstacle>& obstacles, const CellLayout& cells, double largest_grain_radius) {
+    std::array<bool, 3> images{};
+    for (int a = 0; a < D; ++a) images[static_cast<std::size_t>(a)] = has_images(a);
+    obstacle_lists_ = ObstacleLists<D>(obstacles, cells, images, length_, largest_grain_radius);
+    obstacles_ = obstacles;
+  }
+  const ObstacleLists<D>& obstacle_lists() const { return obstacle_lists_; }
+
   AxisBoundary kind(int axis) const { return kind_[static_cast<std::size_t>(axis)]; }
   // Whether the grid has neighbours beyond its faces along `axis` (no: walls).
   bool has_images(int axis) const { return kind(axis) != AxisBoundary::kWalls; }
@@ -73,6 +91,13 @@ class BoxBoundaries {
   double& image_velocity() { return frame_.shear_velocity; }
   double image_velocity() const { return frame_.shear_velocity; }
   const WallParams& wall(int face) const { return wall_[static_cast<std::size_t>(face)]; }
+  // New restitutions of the obstacles (those of production; the places stay).
+  void set_obstacle_restitutions(const std::vector<Obstacle>& obstacles) {
+    for (std::size_t k = 0; k < obstacles_.size(); ++k) {
+      obstacles_[k].restitution = obstacles[k].restitution;
+      obstacles_[k].tangential_restitution = obstacles[k].tangential_restitution;
+    }
+  }
   // New wall parameters (the restitutions of production), with their drives.
   void set_walls(const std::array<WallParams, 6>& wall) {
     wall_ = wall;
@@ -142,29 +167,88 @@ class BoxBoundaries {
     if (has_images(1)) r[0] -= length(0) * std::floor(frame_.sheared_x(r[0], r[1], strain) / length(0));
   }
 
-  // The earliest wall contact of a grain of radius `radius()` now at r moving at v on `flight`
-  // (motion/motion.hpp), if earlier than `best`: its delay into `best` and its face into `face`.
-  // Contact is when the centre is one radius from the wall; `now` is the production time (where
-  // the moving walls are).
+  // The earliest surface contact of a grain of radius `radius()` in cell `cell`, now at r moving at
+  // v on `flight` (motion/motion.hpp), if earlier than `best`: its delay into `best` and the surface
+  // into `surface`.  Contact with a wall is when the centre is one radius from it; `now` is the
+  // production time (where the moving walls are).  The obstacles are those the cell lists, searched
+  // up to `best` (the grain's leaving the cell, at the latest).
   template <typename Flight, typename Radius>
-  void earliest_wall_hit(const Flight& flight, const Vector& r, const Vector& v, Radius&& grain_radius, double now,
-                         double& best, int& face) const {
-    if (!walled_) return;
-    const double radius = grain_radius();
-    for (int axis = 0; axis < D; ++axis) {
-      if (has_images(axis)) continue;
-      for (int side = 0; side < 2; ++side) {
-        const int f = 2 * axis + side;
-        const double t = moving(f) ? moving_wall_hit(flight, axis, r[axis], v[axis], moving_plane(f, radius), now, best,
-                                                     gap_tolerance(axis))
-                         : side == 0 ? flight.time_to_plane(axis, r[axis], v[axis], radius, -1)
-                                     : flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1);
-        if (t < best) {
-          best = t;
-          face = f;
+  void earliest_surface_hit(const Flight& flight, std::int32_t cell, const Vector& r, const Vector& v, Radius&& grain_radius,
+                            double now, double& best, int& surface) const {
+    if (walled_) {
+      const double radius = grain_radius();
+      for (int axis = 0; axis < D; ++axis) {
+        if (has_images(axis)) continue;
+        for (int side = 0; side < 2; ++side) {
+          const int f = 2 * axis + side;
+          const double t = moving(f) ? moving_wall_hit(flight, axis, r[axis], v[axis], moving_plane(f, radius), now, best,
+                                                       gap_tolerance(axis))
+                           : side == 0 ? flight.time_to_plane(axis, r[axis], v[axis], radius, -1)
+                                       : flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1);
+          if (t < best) {
+            best = t;
+            surface = f;
+          }
         }
       }
     }
+    if (obstacle_lists_.empty()) return;
+    for (const auto& obstacle : obstacle_lists_.in_cell(cell)) {
+      const double t = obstacle_hit<D>(flight, r - obstacle.centre, v, obstacle.radius + grain_radius(), now, best,
+                                       obstacle_lists_.tolerance());
+      if (t < best) {
+        best = t;
+        surface = kObstacles;
+      }
+    }
+  }
+
+  // A grain's contact with a surface, as its hit's execution sees it.
+  struct SurfaceContact {
+    bool touching = false;  // touching it and moving into it: else nothing happens
+    Vector k_hat;           // from the grain's centre into the surface
+    Vector velocity;        // the surface's (where the grain touches it)
+    double restitution = 1.0;
+    double tangential_restitution = -1.0;
+    std::int32_t obstacle = -1;  // which obstacle; −1: the wall at the face
+  };
+  // Whether the grain of radius `radius` in cell `cell`, at r moving at v at production time `now`,
+  // touches `surface` while moving into it, by the test its search made (a grain that no longer
+  // moves into it, or that a search stopped short of, is left alone); an obstacle hit finds its
+  // obstacle again as the one nearest contact among those the cell lists.
+  SurfaceContact contact(int surface, std::int32_t cell, const Vector& r, const Vector& v, double radius, double now) const {
+    SurfaceContact c;
+    if (surface < kObstacles) {
+      const int axis = surface / 2;
+      c.k_hat = wall_normal(surface);
+      if (moving(surface)) {
+        const MovingPlane plane = moving_plane(surface, radius);
+        c.touching = moving_gap(plane, r[axis], now) <= gap_tolerance(axis) && moving_gap_rate(plane, v[axis], now) < 0.0;
+      } else {
+        c.touching = dot(v, c.k_hat) > 0.0;
+      }
+      c.velocity = wall_velocity(surface, now);
+      c.restitution = wall(surface).restitution;
+      c.tangential_restitution = wall(surface).tangential_restitution;
+      return c;
+    }
+    double nearest = std::numeric_limits<double>::infinity();
+    const typename ObstacleLists<D>::Entry* touched = nullptr;
+    for (const auto& obstacle : obstacle_lists_.in_cell(cell)) {
+      const double gap = std::abs(norm(r - obstacle.centre) - (obstacle.radius + radius));
+      if (gap < nearest) {
+        nearest = gap;
+        touched = &obstacle;
+      }
+    }
+    if (touched == nullptr) return c;
+    c.touching = touches_obstacle<D>(r - touched->centre, v, touched->radius + radius, obstacle_lists_.tolerance());
+    c.k_hat = (1.0 / norm(touched->centre - r)) * (touched->centre - r);
+    const Obstacle& o = obstacles_[static_cast<std::size_t>(touched->obstacle)];
+    c.restitution = o.restitution;
+    c.tangential_restitution = o.tangential_restitution;
+    c.obstacle = touched->obstacle;
+    return c;
   }
   // The contact plane of a moving wall for a grain of radius `radius` (boundary/moving_wall_hit.hpp).
   MovingPlane moving_plane(int face, double radius) const {
@@ -213,6 +297,8 @@ class BoxBoundaries {
   std::array<WallParams, 6> wall_{};
   // Per face: the tangential drive and the normal velocity dh/dt, as protocols of time.
   std::array<ShearProtocol, 6> along_{}, normal_{};
+  ObstacleLists<D> obstacle_lists_;
+  std::vector<Obstacle> obstacles_;  // their restitutions in force
 };
 
 }  // namespace granule

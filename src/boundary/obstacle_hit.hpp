@@ -1,5 +1,5 @@
 // When a grain first touches a fixed obstacle, and whether it touches one now: the one test the
-// search and the hit's execution share (cells/obstacle_lists.hpp, engine/simulation_events.cpp).
+// search and the hit's execution share (boundary/box_boundaries.hpp: earliest_surface_hit, contact).
 //
 // Relative to a fixed point a grain's flight is its own: a straight line, or a parabola under
 // gravity.  On a line the hit is the root of a quadratic, computed exactly as a pair's

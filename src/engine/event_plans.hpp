@@ -76,18 +76,13 @@ struct SurfaceHit {
   double energy_before = 0.0;
 };
 
+// A hit of surface `surface` of the boundaries (a wall's face, or an obstacle: `obstacle`).
 template <int D>
-struct WallHitPlan {
-  int face = 0;
-  SurfaceHit<D> hit;
-};
-
-// A hit of fixed obstacle `obstacle`.
-template <int D>
-struct ObstacleHitPlan {
+struct SurfaceHitPlan {
+  int surface = 0;
   std::int32_t obstacle = -1;
-  Vec<D> normal;  // from the grain to the obstacle (or the periodic image of it touched)
-  SurfaceHit<D> hit;
+  Vec<D> normal{};  // from the grain into the surface
+  SurfaceHit<D> hit{};
 };
 
 }  // namespace granule

@@ -45,8 +45,8 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
       motion_(params.gravity),
-      obstacles_(obstacle_lists()),
       protocol_(image_protocol(params)) {
+  set_obstacles();
   load(state);
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
@@ -142,8 +142,7 @@ void Simulation<D>::start_production(const SystemParams& production) {
   params_.restitution = production.restitution;
   params_.restitution_law = production.restitution_law;
   params_.roughness.tangential_restitution = production.roughness.tangential_restitution;
-  set_walls(production.wall);
-  params_.obstacles = production.obstacles;  // their restitutions (obstacle_law); the lists keep the places
+  set_surfaces(production);
   clock_base_ = -t_now_;
   collisions_ = 0;
   events_ = 0;
@@ -209,7 +208,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     if (j >= 0) prefetch_lines(particles_.data() + j, prefetches_records());
     if (kind == EventKind::kCollision) __builtin_prefetch(&slot(j));  // re-scheduled below, if valid
     bool collided = false;
-    bool hit_wall = false;  // or an obstacle
+    bool hit_wall = false;  // or an obstacle: any surface
     if (kind == EventKind::kCollision) {
       if (!candidate_valid(i)) {
         predict(i);  // the partner has collided since: stale
@@ -218,11 +217,8 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       }
     } else if (kind == EventKind::kNone) {
       return StopReason::kNoEvents;  // its time is +inf, so the stop above returns first
-    } else if (is_wall_hit(kind)) {
-      commit(plan_wall_hit(i, wall_face(kind)));
-      hit_wall = true;
-    } else if (kind == kObstacleHit) {
-      commit(plan_obstacle_hit(i));
+    } else if (is_surface_hit(kind)) {
+      commit(plan_surface_hit(i, hit_surface(kind)));
       hit_wall = true;
     } else {
       commit(plan_crossing(i, kind));

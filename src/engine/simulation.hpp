@@ -25,7 +25,6 @@
 #include "boundary/shear_protocol.hpp"
 #include "cells/cell_grid.hpp"
 #include "cells/exact_divisor.hpp"
-#include "cells/obstacle_lists.hpp"
 #include "engine/collapse_detector.hpp"
 #include "engine/event_plans.hpp"
 #include "engine/observer.hpp"
@@ -203,11 +202,9 @@ class Simulation {
                                  const Vector& surface_velocity) const;
   bool apply(const SurfaceHit<D>& hit);
   void describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& record) const;
-  WallHitPlan<D> plan_wall_hit(std::int32_t i, int face) const;
-  void commit(const WallHitPlan<D>& plan);
-  // The obstacle particle i touches now is found again from its cell's list (none: stale).
-  ObstacleHitPlan<D> plan_obstacle_hit(std::int32_t i) const;
-  void commit(const ObstacleHitPlan<D>& plan);
+  // A hit of surface `surface` of the boundaries (a wall, an obstacle), whose contact they describe.
+  SurfaceHitPlan<D> plan_surface_hit(std::int32_t i, int surface) const;
+  void commit(const SurfaceHitPlan<D>& plan);
   // The flight of particle i through its position now with a new velocity, and storing it.
   FlightState<D> flight_through_now(std::int32_t i, const Vector& velocity) const;
   void set_flight(std::int32_t i, const FlightState<D>& flight);
@@ -251,21 +248,14 @@ class Simulation {
     if (side.spins()) set_spin(i, side.spin);
   }
   // The collision laws (physics/collision_law.hpp): between grains, and between a grain and the
-  // wall at `face` (its own restitutions, the grains' TC model).
+  // surface of the boundaries (a wall, an obstacle: its own restitutions, the grains' TC model).
   CollisionLaw pair_law() const {
     return {params_.restitution, params_.tc_duration, {params_.roughness.tangential_restitution, params_.roughness.friction},
             mass_.empty(), params_.restitution_law};
   }
-  CollisionLaw wall_law(int face) const {
-    const WallParams& wall = boundaries_.wall(face);
-    return {wall.restitution, params_.tc_duration, {wall.tangential_restitution, std::numeric_limits<double>::infinity()}, true,
+  CollisionLaw surface_law(double restitution, double tangential_restitution) const {
+    return {restitution, params_.tc_duration, {tangential_restitution, std::numeric_limits<double>::infinity()}, true,
             params_.restitution_law};
-  }
-  // An obstacle is a wall of its own restitutions, round.
-  CollisionLaw obstacle_law(std::int32_t k) const {
-    const Obstacle& obstacle = params_.obstacles[static_cast<std::size_t>(k)];
-    return {obstacle.restitution, params_.tc_duration, {obstacle.tangential_restitution, std::numeric_limits<double>::infinity()},
-            true, params_.restitution_law};
   }
   // Whether a contact of i with j (j < 0: a wall or an obstacle) now falls within the TC model's duration, and
   // marking the contact: the two places where the TC model's history is read and written.
@@ -347,17 +337,19 @@ class Simulation {
   // The image of a partner at lab offset `offset` from a particle in contact with it, now.
   using PartnerImage = typename BoxBoundaries<D>::PartnerImage;
   PartnerImage nearest_image(const Vector& offset) const { return boundaries_.nearest_image(offset, strain()); }
-  // The walls' parameters, in params_ (what params() reports and checkpoints hold) and in the
-  // boundaries (what the engine applies).
-  void set_walls(const std::array<WallParams, 6>& wall) {
-    params_.wall = wall;
-    boundaries_.set_walls(wall);
+  // The surfaces' parameters — the walls', and the obstacles' restitutions — in params_ (what
+  // params() reports and checkpoints hold) and in the boundaries (what the engine applies).
+  void set_surfaces(const SystemParams& p) {
+    params_.wall = p.wall;
+    params_.obstacles = p.obstacles;
+    boundaries_.set_walls(p.wall);
+    boundaries_.set_obstacle_restitutions(p.obstacles);
   }
-  // The obstacles of params_ listed by the cells of grid_ (the largest grain radius is σ/2).
-  ObstacleLists<D> obstacle_lists() const {
-    std::array<bool, 3> images{};
-    for (int a = 0; a < D; ++a) images[static_cast<std::size_t>(a)] = boundaries_.has_images(a);
-    return {params_.obstacles, grid_, images, {params_.length_x, params_.length_y, params_.length_z}, 0.5 * params_.diameter};
+  // The obstacles of params_ given to the boundaries, listed by the cells of grid_ (the largest grain
+  // radius is σ/2).
+  void set_obstacles() {
+    const CellLayout cells{{grid_.nx, grid_.ny, grid_.nz}, {grid_.width, grid_.height, grid_.depth}};
+    boundaries_.set_obstacles(params_.obstacles, cells, 0.5 * params_.diameter);
   }
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
@@ -369,8 +361,6 @@ class Simulation {
   // particles fly: the boundary and motion policies (ARCHITECTURE.md, "Physics as policies").
   BoxBoundaries<D> boundaries_;
   Motion<D> motion_;
-  // The fixed obstacles each cell's grains can touch (empty without obstacles).
-  ObstacleLists<D> obstacles_;
   double shear_rate_ = 0.0;
   ShearProtocol protocol_;
   bool protocol_running_ = false;

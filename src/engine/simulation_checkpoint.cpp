@@ -248,12 +248,12 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
       boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
       motion_(params.gravity),
-      obstacles_(obstacle_lists()),
       protocol_(image_protocol(params)) {
+  set_obstacles();
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);
   const bool polydisperse = archive.contains(prefix + "particle_diameter");
-  set_walls(params_.wall);
+  set_surfaces(params_);
   const auto n = static_cast<std::size_t>(params.particles);
   particles_.assign(n, ParticleRecord<D>{});
   queue_.reset(static_cast<std::int32_t>(n));

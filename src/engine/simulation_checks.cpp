@@ -19,6 +19,8 @@ constexpr double kDistanceTolerance = 1e-9;
 // predicted delay; grazing collisions make the root ill-conditioned, hence far above 1 ulp.
 constexpr double kDelayTolerance = 1e-6;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The surfaces below this are walls (faces 0 … 5); the last one is the obstacles.
+constexpr int kWalls = BoxBoundaries<2>::kObstacles;
 // The ulps of a box length within which a stored position is known after re-bases and flights.
 constexpr double kRoundOffUlps = 16.0;
 
@@ -62,7 +64,7 @@ void Simulation<D>::check_invariants() const {
         fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
       }
     }
-    for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {  // nor into an obstacle
+    for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {  // nor into an obstacle
       const double contact = obstacle.radius + radius_of(i);
       if (norm(r - obstacle.centre) < contact * (1.0 - kDistanceTolerance)) {
         fail("particle ", user_id(i), " is inside obstacle ", obstacle.obstacle, ": distance ", norm(r - obstacle.centre) / contact, " of contact");
@@ -102,32 +104,33 @@ void Simulation<D>::check_invariants() const {
       const double normal_speed = std::abs(dot(d, v)) / norm(d);
       cosine = dot(d, v) / (norm(d) * norm(v));
       slack = kDistanceTolerance * contact_distance(i, fresh.partner) / normal_speed;
-    } else if (is_wall_hit(kind) && !boundaries_.moving(wall_face(kind)) && params_.gravity[static_cast<std::size_t>(wall_face(kind) / 2)] != 0.0) {
+    } else if (is_surface_hit(kind) && hit_surface(kind) < kWalls && !boundaries_.moving(hit_surface(kind)) &&
+               params_.gravity[static_cast<std::size_t>(hit_surface(kind) / 2)] != 0.0) {
       // A grain resting on a floor: its position is known to a few ulps ε of L, and a parabola
       // that barely leaves the floor closes that gap in up to √(2ε/|g|) (seen: 2·10⁻¹³).
-      const int axis = wall_face(kind) / 2;
+      const int axis = hit_surface(kind) / 2;
       const double gap = kRoundOffUlps * std::numeric_limits<double>::epsilon() * boundaries_.length(axis);
       slack = std::sqrt(2.0 * gap / std::abs(params_.gravity[static_cast<std::size_t>(axis)]));
-    } else if (is_wall_hit(kind) && boundaries_.moving(wall_face(kind))) {
+    } else if (is_surface_hit(kind) && hit_surface(kind) < kWalls && boundaries_.moving(hit_surface(kind))) {
       // A hit on a moving wall is found within the wall's gap tolerance (boundary/moving_wall_hit.hpp):
       // two searches from different instants stop up to tolerance / closing speed apart.
-      const int face = wall_face(kind);
+      const int face = hit_surface(kind);
       const int axis = face / 2;
       const double delay = fresh.delay();
       const double speed_then = motion_.velocity_at(particles_[at(i)].v, t_now_ + delay)[axis];
       const double closing = std::abs(moving_gap_rate(boundaries_.moving_plane(face, radius_of(i)), speed_then, time() + delay));
       slack = 2.0 * boundaries_.gap_tolerance(axis) / closing;
-    } else if (kind == kObstacleHit) {
+    } else if (is_surface_hit(kind)) {
       // Likewise within the obstacles' tolerance (boundary/obstacle_hit.hpp), at the closing speed then.
       const double then = t_now_ + fresh.delay();
       const Vector at_hit = position_at(i, then);
       const Vector v_hit = motion_.velocity_at(particles_[at(i)].v, then);
       double closing = kInf;
-      for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
+      for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {
         const Vector d = at_hit - obstacle.centre;
-        if (std::abs(norm(d) - obstacle.radius - radius_of(i)) <= 2.0 * obstacles_.tolerance()) closing = std::abs(dot(d, v_hit)) / norm(d);
+        if (std::abs(norm(d) - obstacle.radius - radius_of(i)) <= 2.0 * boundaries_.obstacle_lists().tolerance()) closing = std::abs(dot(d, v_hit)) / norm(d);
       }
-      slack = 2.0 * obstacles_.tolerance() / closing;
+      slack = 2.0 * boundaries_.obstacle_lists().tolerance() / closing;
     }
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance) + slack;
     const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
@@ -154,8 +157,8 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     return;
   }
   if (kind == EventKind::kNone) return;
-  if (is_wall_hit(kind)) {  // the grain must touch the wall (or, moving walls, not have passed it)
-    const int face = wall_face(kind);
+  if (is_surface_hit(kind) && hit_surface(kind) < kWalls) {  // the grain must touch the wall (or, moving walls, not have passed it)
+    const int face = hit_surface(kind);
     const int axis = face / 2;
     const double shift = boundaries_.displacement(face, time());
     const double wall = face % 2 == 0 ? shift : boundaries_.length(axis) - shift;
@@ -166,10 +169,10 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     }
     return;
   }
-  if (kind == kObstacleHit) {  // the grain must touch an obstacle its cell lists
+  if (is_surface_hit(kind)) {  // an obstacle: the grain must touch one its cell lists
     double nearest = kInf;
     double contact = 0.0;
-    for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
+    for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {
       const double gap = norm(r - obstacle.centre) - obstacle.radius - radius_of(i);
       if (std::abs(gap) < std::abs(nearest)) {
         nearest = gap;
@@ -177,7 +180,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
       }
     }
     const bool rechecked = nearest > 0.0 && nearest < kInf && params_.has_gravity();  // a search that gave up (obstacle_hit.hpp)
-    if (!rechecked && !(std::abs(nearest) <= obstacles_.tolerance() + kDistanceTolerance * contact)) {
+    if (!rechecked && !(std::abs(nearest) <= boundaries_.obstacle_lists().tolerance() + kDistanceTolerance * contact)) {
       fail("obstacle hit of particle ", user_id(i), " popped ", nearest, " from the nearest obstacle's contact");
     }
     return;

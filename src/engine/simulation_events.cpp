@@ -3,7 +3,6 @@
 // events.  Crossings of cell faces and of the box's faces (thesis §1.4.2), collisions of grains
 // (thesis eq 1.2, Fig 1.3) and hits of flat walls (thesis Appendix A.1), the last two under the
 // collision law (physics/collision_law.hpp).
-#include "boundary/obstacle_hit.hpp"
 #include "engine/simulation.hpp"
 
 namespace granule {
@@ -203,70 +202,33 @@ void Simulation<D>::describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& 
 }
 
 template <int D>
-WallHitPlan<D> Simulation<D>::plan_wall_hit(std::int32_t i, int face) const {
-  const Vector k_hat = BoxBoundaries<D>::wall_normal(face);  // from the grain towards the wall
+SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int surface) const {
   const Vector before = velocity_now(i);
-  // Re-validate as for pairs: a grain no longer moving into the wall is left alone; at a moving
-  // wall, also one not touching it (a search that stopped short), by the test its prediction made.
-  const bool moving = boundaries_.moving(face);
-  const int axis = face / 2;
-  const double now = time();
-  const auto leaving_moving_wall = [&] {
-    const MovingPlane plane = boundaries_.moving_plane(face, radius_of(i));
-    return moving_gap(plane, position_now(i)[axis], now) > boundaries_.gap_tolerance(axis) ||
-           moving_gap_rate(plane, before[axis], now) >= 0.0;
-  };
-  if (moving ? leaving_moving_wall() : dot(before, k_hat) <= 0.0) return {face, {.particle = i}};  // nothing to apply
-  return {face, plan_surface_hit(i, before, k_hat, wall_law(face), boundaries_.wall_velocity(face, now))};
+  const auto contact = boundaries_.contact(surface, slot(i).cell(), position_now(i), before, radius_of(i), time());
+  if (!contact.touching) return {surface, -1, {}, {.particle = i}};  // nothing to apply
+  return {surface, contact.obstacle, contact.k_hat,
+          plan_surface_hit(i, before, contact.k_hat, surface_law(contact.restitution, contact.tangential_restitution), contact.velocity)};
 }
 
 template <int D>
-void Simulation<D>::commit(const WallHitPlan<D>& plan) {
+void Simulation<D>::commit(const SurfaceHitPlan<D>& plan) {
   if (!apply(plan.hit)) return;
   if (!observers_.empty()) {
-    WallCollisionRecord<D> record;
-    describe(plan.hit, record);
-    record.axis = plan.face / 2;
-    record.side = plan.face % 2;
-    record.impulse_on_wall = plan.hit.outcome.impulse.total();
-    for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
-  }
-  predict(plan.hit.particle);
-}
-
-template <int D>
-ObstacleHitPlan<D> Simulation<D>::plan_obstacle_hit(std::int32_t i) const {
-  const Vector r = position_now(i);
-  const Vector before = velocity_now(i);
-  // The obstacle touched is the one nearest contact among those the cell lists (two at once only
-  // where obstacles nearly touch each other); it must be touched and approached, by the search's
-  // own test, or the grain is predicted again.
-  double nearest = kNever;
-  const typename ObstacleLists<D>::Entry* touched = nullptr;
-  for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
-    const double gap = std::abs(norm(r - obstacle.centre) - (obstacle.radius + radius_of(i)));
-    if (gap < nearest) {
-      nearest = gap;
-      touched = &obstacle;
+    if (plan.obstacle < 0) {
+      WallCollisionRecord<D> record;
+      describe(plan.hit, record);
+      record.axis = plan.surface / 2;
+      record.side = plan.surface % 2;
+      record.impulse_on_wall = plan.hit.outcome.impulse.total();
+      for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
+    } else {
+      ObstacleCollisionRecord<D> record;
+      describe(plan.hit, record);
+      record.obstacle = plan.obstacle;
+      record.normal = plan.normal;
+      record.impulse_on_obstacle = plan.hit.outcome.impulse.total();
+      for (EventObserver<D>* observer : observers_) observer->on_obstacle_collision(record);
     }
-  }
-  if (touched == nullptr || !touches_obstacle<D>(r - touched->centre, before, touched->radius + radius_of(i), obstacles_.tolerance())) {
-    return {-1, {}, {.particle = i}};  // nothing to apply
-  }
-  const Vector k_hat = (1.0 / norm(touched->centre - r)) * (touched->centre - r);
-  return {touched->obstacle, k_hat, plan_surface_hit(i, before, k_hat, obstacle_law(touched->obstacle), Vector{})};
-}
-
-template <int D>
-void Simulation<D>::commit(const ObstacleHitPlan<D>& plan) {
-  if (!apply(plan.hit)) return;
-  if (!observers_.empty()) {
-    ObstacleCollisionRecord<D> record;
-    describe(plan.hit, record);
-    record.obstacle = plan.obstacle;
-    record.normal = plan.normal;
-    record.impulse_on_obstacle = plan.hit.outcome.impulse.total();
-    for (EventObserver<D>* observer : observers_) observer->on_obstacle_collision(record);
   }
   predict(plan.hit.particle);
 }
@@ -284,10 +246,8 @@ template SurfaceHit<2> Simulation<2>::plan_surface_hit(std::int32_t, const Vec<2
                                                            const Vec<2>&) const;
 template bool Simulation<2>::apply(const SurfaceHit<2>&);
 template void Simulation<2>::describe(const SurfaceHit<2>&, SurfaceContactRecord<2>&) const;
-template WallHitPlan<2> Simulation<2>::plan_wall_hit(std::int32_t, int) const;
-template void Simulation<2>::commit(const WallHitPlan<2>&);
-template ObstacleHitPlan<2> Simulation<2>::plan_obstacle_hit(std::int32_t) const;
-template void Simulation<2>::commit(const ObstacleHitPlan<2>&);
+template SurfaceHitPlan<2> Simulation<2>::plan_surface_hit(std::int32_t, int) const;
+template void Simulation<2>::commit(const SurfaceHitPlan<2>&);
 template FlightState<3> Simulation<3>::flight_through_now(std::int32_t, const Vec<3>&) const;
 template void Simulation<3>::set_flight(std::int32_t, const FlightState<3>&);
 template CrossingPlan<3> Simulation<3>::plan_crossing(std::int32_t, EventKind) const;
@@ -299,9 +259,7 @@ template SurfaceHit<3> Simulation<3>::plan_surface_hit(std::int32_t, const Vec<3
                                                            const Vec<3>&) const;
 template bool Simulation<3>::apply(const SurfaceHit<3>&);
 template void Simulation<3>::describe(const SurfaceHit<3>&, SurfaceContactRecord<3>&) const;
-template WallHitPlan<3> Simulation<3>::plan_wall_hit(std::int32_t, int) const;
-template void Simulation<3>::commit(const WallHitPlan<3>&);
-template ObstacleHitPlan<3> Simulation<3>::plan_obstacle_hit(std::int32_t) const;
-template void Simulation<3>::commit(const ObstacleHitPlan<3>&);
+template SurfaceHitPlan<3> Simulation<3>::plan_surface_hit(std::int32_t, int) const;
+template void Simulation<3>::commit(const SurfaceHitPlan<3>&);
 
 }  // namespace granule

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "boundary/obstacle_hit.hpp"
 #include "engine/simulation.hpp"
 #include "physics/collision_batch.hpp"
 #include "physics/collision_time.hpp"
@@ -60,21 +59,9 @@ typename Simulation<D>::Crossing Simulation<D>::next_crossing(const Flight& flig
       kind = crossing_through(axis, exit.direction > 0 ? 1 : 0);
     }
   }
-  int face = -1;
-  boundaries_.earliest_wall_hit(flight, r, v, [&] { return radius_of(i); }, time(), best, face);
-  if (face >= 0) kind = wall_hit(face);
-  // The obstacles this cell's grains can touch, up to the grain's leaving the cell.
-  if (!obstacles_.empty()) {
-    const double contact_offset = radius_of(i);
-    for (const auto& obstacle : obstacles_.in_cell(slot(i).cell())) {
-      const double t = obstacle_hit<D>(flight, r - obstacle.centre, v, obstacle.radius + contact_offset, time(), best,
-                                       obstacles_.tolerance());
-      if (t < best) {
-        best = t;
-        kind = kObstacleHit;
-      }
-    }
-  }
+  int surface = -1;
+  boundaries_.earliest_surface_hit(flight, slot(i).cell(), r, v, [&] { return radius_of(i); }, time(), best, surface);
+  if (surface >= 0) kind = surface_hit(surface);
   if (best == kInf) kind = EventKind::kNone;
   return {kind, best};
 }

@@ -1,45 +1,43 @@
 // Pending events are plain data: one per particle, invalidated lazily by collision counters.
 // A cell crossing is data too: the face it leaves through, 2·axis + direction (0: towards lower
 // coordinates, 1: higher), so that one code path serves every axis of a 2D or 3D grid; and so is
-// a wall hit: the wall's face, 2·axis + side (side 0 at coordinate 0, 1 at L); and an obstacle hit,
-// whose obstacle the execution finds again as the one the grain touches (cells/obstacle_lists.hpp).
+// a surface hit: the surface of the boundaries (boundary/box_boundaries.hpp), the wall at face
+// 2·axis + side (side 0 at coordinate 0, 1 at L), or 6, an obstacle, which the hit's execution
+// finds again as the one the grain touches.
 #pragma once
 
 #include <cstdint>
 
 namespace granule {
 
-// One byte per particle: 0 nothing, 1 a collision, 2 + face a crossing of that face, 8 + face a hit
-// of the wall at that face (8: past the crossings of a 3D grid, so 2D and 3D share the codes), 14
-// a hit of a fixed obstacle.
+// One byte per particle: 0 nothing, 1 a collision, 2 + face a crossing of that face, 8 + surface a
+// hit of that surface (8: past the crossings of a 3D grid, so 2D and 3D share the codes).
 enum class EventKind : std::uint8_t {
   kNone = 0,       // nothing ahead (event time is +inf)
   kCollision = 1,  // with `partner`, valid while the partner's collision counter is unchanged
 };
 
 inline constexpr std::uint8_t kFirstCrossing = 2;
-inline constexpr std::uint8_t kFirstWallHit = 8;
-inline constexpr std::uint8_t kObstacleHitKind = kFirstWallHit + 6;
-inline constexpr EventKind kObstacleHit = static_cast<EventKind>(kObstacleHitKind);
+inline constexpr std::uint8_t kFirstSurfaceHit = 8;
+inline constexpr int kSurfaces = 7;  // six wall faces and the obstacles
+inline constexpr std::uint8_t kLastEventKind = kFirstSurfaceHit + kSurfaces - 1;
 
 constexpr EventKind crossing_through(int axis, int direction) {
   return static_cast<EventKind>(kFirstCrossing + 2 * axis + direction);
 }
 constexpr bool is_crossing(EventKind kind) {
-  return static_cast<std::uint8_t>(kind) >= kFirstCrossing && static_cast<std::uint8_t>(kind) < kFirstWallHit;
+  return static_cast<std::uint8_t>(kind) >= kFirstCrossing && static_cast<std::uint8_t>(kind) < kFirstSurfaceHit;
 }
-constexpr EventKind wall_hit(int face) { return static_cast<EventKind>(kFirstWallHit + face); }
-constexpr bool is_wall_hit(EventKind kind) {
-  return static_cast<std::uint8_t>(kind) >= kFirstWallHit && static_cast<std::uint8_t>(kind) < kObstacleHitKind;
-}
-constexpr int wall_face(EventKind kind) { return static_cast<int>(kind) - kFirstWallHit; }
+constexpr EventKind surface_hit(int surface) { return static_cast<EventKind>(kFirstSurfaceHit + surface); }
+constexpr bool is_surface_hit(EventKind kind) { return static_cast<std::uint8_t>(kind) >= kFirstSurfaceHit; }
+constexpr int hit_surface(EventKind kind) { return static_cast<int>(kind) - kFirstSurfaceHit; }
 constexpr int crossing_axis(EventKind kind) { return (static_cast<int>(kind) - kFirstCrossing) / 2; }
 // +1 towards higher coordinates, −1 towards lower.
 constexpr int crossing_direction(EventKind kind) { return (static_cast<int>(kind) - kFirstCrossing) % 2 == 1 ? 1 : -1; }
 // Whether a kind can exist in d dimensions (checkpoints are checked against it).
 constexpr bool valid_event_kind(std::uint8_t kind, int dimension) {
-  return kind < kFirstCrossing + 2 * dimension || (kind >= kFirstWallHit && kind < kFirstWallHit + 2 * dimension) ||
-         kind == kObstacleHitKind;
+  return kind < kFirstCrossing + 2 * dimension || (kind >= kFirstSurfaceHit && kind < kFirstSurfaceHit + 2 * dimension) ||
+         kind == kLastEventKind;
 }
 
 }  // namespace granule

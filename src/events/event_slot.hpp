@@ -34,7 +34,7 @@ class alignas(16) EventSlot {
  private:
   friend class EventQueue;
   static constexpr std::uint32_t kKindMask = (1u << kKindBits) - 1;
-  static_assert(kObstacleHitKind < (1 << kKindBits), "every event kind fits beside the cell id");
+  static_assert(kLastEventKind < (1 << kKindBits), "every event kind fits beside the cell id");
 
   double time_ = std::numeric_limits<double>::infinity();
   std::uint32_t cell_and_kind_ = 0;  // cell id << 4 | kind

@@ -2,7 +2,7 @@
 // an obstacle is listed in every cell whose box comes within its radius plus the largest grain
 // radius of its centre, once per periodic image that does (an obstacle near a periodic face is
 // touched across it).  A grain's prediction searches the obstacles of its own cell only, up to its
-// crossing out of it (engine/simulation_prediction.cpp): a hit after that is found from the next
+// crossing out of it (BoxBoundaries::earliest_surface_hit): a hit after that is found from the next
 // cell, where the obstacle is listed again if the grain can touch it from there.  So the lists
 // change nothing at a crossing and nothing at a renumbering, and hold no per-particle state.
 // Grids that follow a Lees–Edwards flow are not supported: the obstacle would move through them
@@ -16,10 +16,20 @@
 #include <vector>
 
 #include "boundary/obstacle.hpp"
-#include "cells/cell_grid.hpp"
 #include "geometry/vec.hpp"
 
 namespace granule {
+
+// The engine's cells as the lists see them: counts and sizes per axis (x, y, z; one layer in 2D),
+// cell id (layer · n_y + row) · n_x + column (cells/cell_grid.hpp).
+struct CellLayout {
+  std::array<int, 3> count{1, 1, 1};
+  std::array<double, 3> size{1.0, 1.0, 1.0};
+  std::int64_t cells() const { return static_cast<std::int64_t>(count[0]) * count[1] * count[2]; }
+  std::int32_t index(int column, int row, int layer) const {
+    return static_cast<std::int32_t>((static_cast<std::int64_t>(layer) * count[1] + row) * count[0] + column);
+  }
+};
 
 template <int D>
 class ObstacleLists {
@@ -34,11 +44,11 @@ class ObstacleLists {
 
   ObstacleLists() = default;
   // `images[a]`: whether axis a is periodic (else walled); `lengths`: the box.
-  ObstacleLists(const std::vector<Obstacle>& obstacles, const CellGrid& grid, const std::array<bool, 3>& images,
+  ObstacleLists(const std::vector<Obstacle>& obstacles, const CellLayout& grid, const std::array<bool, 3>& images,
                 const std::array<double, 3>& lengths, double largest_grain_radius) {
     if (obstacles.empty()) return;
     // Two passes over the listings, counting then filling, so the lists take their own size only.
-    first_.assign(static_cast<std::size_t>(grid.cell_count()) + 1, 0);
+    first_.assign(static_cast<std::size_t>(grid.cells()) + 1, 0);
     for_each_listing(obstacles, grid, images, lengths, largest_grain_radius,
                      [&](std::int32_t cell, const Entry&) { ++first_[static_cast<std::size_t>(cell) + 1]; });
     for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
@@ -65,7 +75,7 @@ class ObstacleLists {
   // Calls visit(cell, entry) for every cell that lists an obstacle or one of its periodic images:
   // each cell whose box lies within the obstacle's radius plus `largest_grain_radius` of the centre.
   template <typename Visit>
-  static void for_each_listing(const std::vector<Obstacle>& obstacles, const CellGrid& grid, const std::array<bool, 3>& images,
+  static void for_each_listing(const std::vector<Obstacle>& obstacles, const CellLayout& grid, const std::array<bool, 3>& images,
                                const std::array<double, 3>& lengths, double largest_grain_radius, Visit&& visit) {
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       const Obstacle& o = obstacles[k];
@@ -85,16 +95,16 @@ class ObstacleLists {
     }
   }
   template <typename Visit>
-  static void for_each_cell_within(const Entry& entry, double reach, const CellGrid& grid, Visit& visit) {
+  static void for_each_cell_within(const Entry& entry, double reach, const CellLayout& grid, Visit& visit) {
     std::array<int, 3> low{};
     std::array<int, 3> high{};
     for (int a = 0; a < D; ++a) {
-      const double size = grid.size(a);
+      const double size = grid.size[static_cast<std::size_t>(a)];
       const double from = std::floor((entry.centre[a] - reach) / size);
       const double to = std::floor((entry.centre[a] + reach) / size);
-      if (to < 0.0 || from > grid.count(a) - 1) return;
+      if (to < 0.0 || from > grid.count[static_cast<std::size_t>(a)] - 1) return;
       low[static_cast<std::size_t>(a)] = static_cast<int>(std::max(from, 0.0));
-      high[static_cast<std::size_t>(a)] = static_cast<int>(std::min(to, static_cast<double>(grid.count(a) - 1)));
+      high[static_cast<std::size_t>(a)] = static_cast<int>(std::min(to, static_cast<double>(grid.count[static_cast<std::size_t>(a)] - 1)));
     }
     std::array<int, 3> c{};
     for (c[2] = low[2]; c[2] <= high[2]; ++c[2]) {
@@ -102,8 +112,8 @@ class ObstacleLists {
         for (c[0] = low[0]; c[0] <= high[0]; ++c[0]) {
           double distance_sq = 0.0;  // from the centre to the cell's box
           for (int a = 0; a < D; ++a) {
-            const double lower = c[static_cast<std::size_t>(a)] * grid.size(a);
-            const double upper = lower + grid.size(a);
+            const double lower = c[static_cast<std::size_t>(a)] * grid.size[static_cast<std::size_t>(a)];
+            const double upper = lower + grid.size[static_cast<std::size_t>(a)];
             const double outside = std::max({lower - entry.centre[a], 0.0, entry.centre[a] - upper});
             distance_sq += outside * outside;
           }
