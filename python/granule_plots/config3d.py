@@ -3,7 +3,8 @@ disk (a sphere impostor: per-pixel depth and normal, so spheres occlude each oth
 depth buffer sorts them), in an orthographic or perspective view, coloured by the streamwise velocity
 v_x (default under Lees-Edwards) or the speed |v| (default otherwise).  y (gradient) is drawn
 upwards, x (flow) and z (vorticity) span the floor; the box edges are drawn where no sphere hides
-them.  A few 10^4 spheres draw in seconds."""
+them.  Fixed obstacles (dataset obstacles) are drawn as grey spheres among them.  A few 10^4
+spheres draw in seconds."""
 import math
 
 import numpy as np
@@ -162,6 +163,7 @@ def main():
         box = tuple(float(b) for b in f.attrs["box"])
         diameters = np.asarray(f["diameters"], dtype=np.float64) if "diameters" in f else np.full(len(positions), float(f.attrs["diameter"]))
         boundary = text(f.attrs.get("boundary", "periodic"))
+        obstacles = np.asarray(f["obstacles"][()], dtype=np.float64).reshape(-1, 6) if "obstacles" in f else np.zeros((0, 6))
         title = (f"N = {len(positions)}, ẽ = {float(f.attrs['restitution']):g}, {boundary}; "
                  f"t = {float(f['time'][k]):.4g}, c = {float(f['collisions_per_particle'][k]):.4g}")
     coloring = a.color if a.color != "auto" else ("velocity_x" if boundary == "lees-edwards" else "speed")
@@ -170,8 +172,8 @@ def main():
     picture_width = int(round(width * (0.86 if legend else 1.0)))
     picture_height = int(round(height * 0.93))
     project = Projection(box, a.view, a.perspective, picture_width, picture_height)
-    columns, rows, depth, pixels_per_length = project(positions)
-    radius = 0.5 * diameters
+    columns, rows, depth, pixels_per_length = project(np.concatenate([positions, obstacles[:, :3]]))
+    radius = 0.5 * np.concatenate([diameters, obstacles[:, 3]])
     radius_px = np.maximum(radius * pixels_per_length, 0.5)
     if coloring == "velocity_x":
         values = velocities[:, 0]
@@ -183,6 +185,7 @@ def main():
     else:
         values, norm, cmap, label = np.zeros(len(positions)), matplotlib.colors.Normalize(-1, 1), matplotlib.colormaps["gray"], ""
     base = cmap(norm(values))[:, :3] if coloring != "none" else np.full((len(positions), 3), 0.6)
+    base = np.concatenate([base, np.full((len(obstacles), 3), 0.45)])
     best, best_depth, offset_x, offset_y = rasterise(columns, rows, depth, radius_px, radius, picture_width, picture_height)
     image = shade(base, best, offset_x, offset_y, radius_px).reshape(picture_height, picture_width, 3)
 
