@@ -88,6 +88,7 @@ constexpr BenchWorkload kWorkloads2d[] = {
     {"rough cooling e=0.9 b=0.5", 0.05, 0.9, false, BenchSurfaces::kRough},
     {"walls+gravity elastic", 0.05, 1.0, false, BenchSurfaces::kWallsGravity},
     {"rough wall shear e=0.9", 0.05, 0.9, false, BenchSurfaces::kRoughWallShear},
+    {"obstacles flow e=0.9", 0.05, 0.9, false, BenchSurfaces::kObstaclesFlow},
 };
 constexpr BenchWorkload kWorkloads3d[] = {
     {"3D elastic, phi=0.30", 0.30, 1.0, false},
@@ -97,6 +98,7 @@ constexpr BenchWorkload kWorkloads3d[] = {
     {"3D rough cooling e=0.9 b=0.5", 0.05, 0.9, false, BenchSurfaces::kRough},
     {"3D walls+gravity elastic", 0.05, 1.0, false, BenchSurfaces::kWallsGravity},
     {"3D rough wall shear e=0.9", 0.05, 0.9, false, BenchSurfaces::kRoughWallShear},
+    {"3D obstacles flow e=0.9", 0.05, 0.9, false, BenchSurfaces::kObstaclesFlow},
 };
 
 }  // namespace
@@ -172,6 +174,19 @@ SystemParams bench_workload_system(const BenchWorkload& w, int dimension, std::i
     }
   }
   if (w.surfaces == BenchSurfaces::kWallsGravity) p.gravity[1] = -2.0;  // barometric height T/g = L/2
+  if (w.surfaces == BenchSurfaces::kObstaclesFlow) {
+    // A flow along x driven by g between walls on y, through a square array of 4^d obstacles of
+    // diameter 0.1 (a tenth of the box), e_o = 0.9: what the obstacle search and hits cost.
+    p.walls[1] = true;
+    p.gravity[0] = 1.0;
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        for (int k = 0; k < (dimension == 3 ? 4 : 1); ++k) {
+          p.obstacles.push_back({{0.25 * i + 0.125, 0.25 * j + 0.125, dimension == 3 ? 0.25 * k + 0.125 : 0.0}, 0.1, 0.9, -1.0});
+        }
+      }
+    }
+  }
   if (w.lees_edwards || w.surfaces == BenchSurfaces::kRoughWallShear) {
     double rate = 0.0;
     if (dimension == 2) {

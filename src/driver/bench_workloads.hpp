@@ -17,7 +17,7 @@
 namespace granule::driver {
 
 // What a workload adds to smooth grains in a periodic or Lees–Edwards box.
-enum class BenchSurfaces { kNone, kRough, kWallsGravity, kRoughWallShear };
+enum class BenchSurfaces { kNone, kRough, kWallsGravity, kRoughWallShear, kObstaclesFlow };
 
 struct BenchWorkload {
   const char* name;

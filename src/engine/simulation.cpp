@@ -83,7 +83,7 @@ template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(last_collision_) +
-                      bytes(user_id_) + lists_.bytes() + queue_.bytes();
+                      bytes(user_id_) + lists_.bytes() + queue_.bytes() + boundaries_.obstacle_lists().bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
