@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "analysis/cell_fields.hpp"
 #include "analysis/named_cell_fields.hpp"
 #include "io/export_field_source.hpp"
+#include "io/atomic_file.hpp"
 #include "io/export_vtk.hpp"
+#include "io/export_xyz.hpp"
 #include "io/frame_selection.hpp"
 #include "io/run_files.hpp"
 #include "io/snapshot_file.hpp"
@@ -65,6 +68,31 @@ ParticleExport plan_particle_export(const ExportRequest& r) {
                                                        : fmt::format("particles_{}.{}", e.frames[0], extension);
   e.out = r.out.empty() ? output_beside(r.input, default_name) : r.out;
   return e;
+}
+
+std::string export_obstacles(const ParticleExport& e, const std::string& format) {
+  const SnapshotRead first = read_snapshot(e.snapshots, 0);
+  const SystemParams& s = first.metadata.system;
+  if (s.obstacles.empty() || (format != "vtk" && format != "xyz")) return {};
+  ParticleState obstacles;
+  obstacles.dimension = s.dimension;
+  const std::size_t m = s.obstacles.size();
+  obstacles.diameter.resize(m);
+  obstacles.mass.assign(m, 1.0);
+  obstacles.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    for (int a = 0; a < s.dimension; ++a) obstacles.position(a)[k] = s.obstacles[k].centre[static_cast<std::size_t>(a)];
+    obstacles.diameter[k] = s.obstacles[k].diameter;
+  }
+  const std::string path = (fs::path(e.out).parent_path() / (format == "vtk" ? "obstacles.vtp" : "obstacles.xyz")).string();
+  if (format == "vtk") {
+    write_vtp_particles(path, obstacles, 0.0, 0.0);
+  } else {
+    std::ostringstream out;
+    write_xyz_frame(out, obstacles, {0.0, s.length_x, s.length_y, 0.0, 0.0, first.metadata.boundary, 0.0, 0.0, s.length_z});
+    write_file_atomically(path, out.str());
+  }
+  return path;
 }
 
 void export_fields(const ExportRequest& r, const ExportWritten& written) {

@@ -31,6 +31,10 @@ struct ParticleExport {
   std::string out;
 };
 ParticleExport plan_particle_export(const ExportRequest& request);
+// A run's fixed obstacles beside its particles: obstacles.vtp (--format vtk) or obstacles.xyz
+// (xyz), one frame of points at their centres with their radii (zero velocities), in the folder of
+// `exported.out`; returns the path written, "" when the run has no obstacles (or for GSD).
+std::string export_obstacles(const ParticleExport& exported, const std::string& format);
 
 // Writes the fields (fields_<k>.vti for one frame, else a fields.pvd series): from the run's
 // fields.h5 when it has one (or the input is a fields file), else computed from its snapshots.

@@ -2,7 +2,7 @@
 checkpoint ends with the same snapshots and time series as the run never stopped; the snapshot file
 records the obstacles (dataset obstacles); the time series carries the drag and lift on each, and
 the drag on the obstacles equals the momentum gravity puts into the flow less what the walls take
-(steady state, averaged); the picture is drawn; bad obstacle input exits 2 naming the entry and
+(steady state, averaged); the picture is drawn; exports write the obstacles beside the particles; bad obstacle input exits 2 naming the entry and
 writes nothing; a snapshot whose grains lie inside an obstacle is refused."""
 import csv
 
@@ -53,6 +53,12 @@ print(f"drag {drag:.4g}, wall friction {walls:.4g}, gravity's push {push:.4g}")
 check(drag > 0.0 and abs(drag + walls - push) < 0.1 * push,
       f"drag {drag} and wall friction {walls} balance gravity's push {push} within the flow's acceleration (10 %)")
 check((whole / "configuration.png").exists(), "the picture is drawn")
+for fmt, name in (("xyz", "obstacles.xyz"), ("vtk", "obstacles.vtp")):
+    result = granule("plot", "export", whole, "--format", fmt)
+    check(result.returncode == 0 and (whole / name).exists(), f"export --format {fmt} writes {name}: {result.stderr}")
+lines = (whole / "obstacles.xyz").read_text().splitlines()
+check(lines[0] == "2" and [float(v) for v in lines[3].split()[1:]] == [1.5, 0.2, 0.0, 0.0, 0.0, 0.0, 0.05],
+      f"obstacles.xyz lists the obstacles with their radii: {lines}")
 
 bad = WORK / "bad"
 result = granule("run", "--out", bad, "--set", "system.particles=50",

@@ -20,6 +20,7 @@ void print_written(const std::string& path) { fmt::print("wrote {}\n", path); }
 // Returns the exit code (that of the GSD writer for --format gsd).
 int export_particles(const ExportRequest& r) {
   const ParticleExport e = plan_particle_export(r);
+  if (const std::string obstacles = export_obstacles(e, r.format); !obstacles.empty()) print_written(obstacles);
   if (r.format == "gsd") {
     return render::run_plot_script("export_gsd", {e.snapshots, "--out", e.out, "--frames", fmt::format("{}", fmt::join(e.frames, ","))});
   }
