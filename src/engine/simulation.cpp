@@ -138,6 +138,20 @@ void Simulation<D>::rebuild() {
 }
 
 template <int D>
+void Simulation<D>::set_surfaces(const SystemParams& p) {
+  params_.wall = p.wall;
+  params_.obstacles = p.obstacles;
+  boundaries_.set_walls(p.wall);
+  boundaries_.set_obstacle_restitutions(p.obstacles);
+}
+
+template <int D>
+void Simulation<D>::set_obstacles() {
+  const CellLayout cells{{grid_.nx, grid_.ny, grid_.nz}, {grid_.width, grid_.height, grid_.depth}};
+  boundaries_.set_obstacles(params_.obstacles, cells, 0.5 * params_.diameter);
+}
+
+template <int D>
 void Simulation<D>::start_production(const SystemParams& production) {
   params_.restitution = production.restitution;
   params_.restitution_law = production.restitution_law;

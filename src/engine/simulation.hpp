@@ -339,18 +339,10 @@ class Simulation {
   PartnerImage nearest_image(const Vector& offset) const { return boundaries_.nearest_image(offset, strain()); }
   // The surfaces' parameters — the walls', and the obstacles' restitutions — in params_ (what
   // params() reports and checkpoints hold) and in the boundaries (what the engine applies).
-  void set_surfaces(const SystemParams& p) {
-    params_.wall = p.wall;
-    params_.obstacles = p.obstacles;
-    boundaries_.set_walls(p.wall);
-    boundaries_.set_obstacle_restitutions(p.obstacles);
-  }
+  void set_surfaces(const SystemParams& p);
   // The obstacles of params_ given to the boundaries, listed by the cells of grid_ (the largest grain
   // radius is σ/2).
-  void set_obstacles() {
-    const CellLayout cells{{grid_.nx, grid_.ny, grid_.nz}, {grid_.width, grid_.height, grid_.depth}};
-    boundaries_.set_obstacles(params_.obstacles, cells, 0.5 * params_.diameter);
-  }
+  void set_obstacles();
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
 
