@@ -17,7 +17,6 @@ namespace granule {
 namespace {
 
 constexpr const char* kKey = "obstacles";
-constexpr NumberRange kDiameters{0.0, kUnbounded, true, true};
 // Files of obstacles are read whole: a row of pegs or a porous bed is thousands, not millions.
 constexpr std::size_t kMostObstacles = 1'000'000;
 
@@ -144,8 +143,8 @@ void resolve_obstacles(const toml::table& root, RunConfig& c) {
         if (!v || !std::isfinite(*v)) throw ConfigError{fmt::format("{}.centre = {} is not allowed: finite numbers", where, toml_value_text(*centre))};
         o.centre[a] = *v;
       }
-      const std::optional<double> diameter = number_of(entry, k, "diameter", kDiameters);
-      if (!diameter) throw ConfigError{fmt::format("{} needs diameter = D > 0", where)};
+      const std::optional<double> diameter = number_of(entry, k, "diameter", kLengthRange);
+      if (!diameter) throw ConfigError{fmt::format("{} needs diameter = D in {}", where, kLengthRange.text())};
       o.diameter = *diameter;
       given.push_back(o);
     }

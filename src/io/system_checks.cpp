@@ -90,7 +90,7 @@ void grain_in_obstacle(std::vector<std::string>& problems, const ParticleState& 
 
 std::vector<std::string> obstacle_problems(const Obstacle& o, const SystemParams& s, const std::string& name) {
   std::vector<std::string> problems;
-  require(problems, "diameter of " + name, o.diameter, NumberRange{0.0, kUnbounded, true, true});
+  require(problems, "diameter of " + name, o.diameter, kLengthRange);
   require(problems, "restitution of " + name, o.restitution, kRestitutions);
   require(problems, "tangential restitution of " + name, o.tangential_restitution, kTangentialRestitutions);
   const double lengths[3] = {s.length_x, s.length_y, s.length_z};

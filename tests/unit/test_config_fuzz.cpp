@@ -92,7 +92,7 @@ const std::vector<std::string> kKeys = {
     "fields.every_collisions_per_particle", "fields.every_time", "fields.subtract_shear_profile",
     "collisions.impact_parameters", "collisions.free_paths", "collisions.window_collisions_per_particle",
     "collisions.from_collisions_per_particle", "collisions.density_windows", "collisions.speed_windows",
-    "collisions.impact_bins", "collisions.length_bins", "collisions.angle_bins", "collisions.max_length"};
+    "collisions.impact_bins", "collisions.length_bins", "collisions.angle_bins", "collisions.max_length", "obstacles"};
 
 const std::vector<std::string> kHostileValues = {
     "nan", "+nan", "inf", "-inf", "0", "-0.0", "-1", "1e308", "-1e308", "1e-308", "5e-324", "9223372036854775807",

@@ -75,10 +75,10 @@ TEST(ConfigObstacles, AFileGivesManyObstaclesSharingTheirRestitutions) {
 }
 
 TEST(ConfigObstacles, BadEntriesAreRefusedByNameAndRange) {
-  expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\n", {"obstacles[0] needs diameter = D > 0"});
+  expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\n", {"obstacles[0] needs diameter = D in [1e-30, 1e+30]"});
   expect_refused("[[obstacles]]\ndiameter = 0.1\n", {"obstacles[0] needs centre = [x, y]", "2 numbers"});
   expect_refused("[[obstacles]]\ncentre = [0.5, 0.5, 0.5]\ndiameter = 0.1\n", {"obstacles[0]", "centre = [x, y]", "[0.5, 0.5, 0.5]"});
-  expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\ndiameter = -1\n", {"obstacles[0].diameter = -1", "(0, ∞)"});
+  expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\ndiameter = -1\n", {"obstacles[0].diameter = -1", "[1e-30, 1e+30]"});
   expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\ndiameter = 0.1\nrestitution = 1.5\n", {"obstacles[0].restitution = 1.5", "(0, 1]"});
   expect_refused("[[obstacles]]\ncentre = [0.5, 0.5]\ndiameter = 0.1\ntangential_restitution = 2\n",
                  {"obstacles[0].tangential_restitution = 2", "[-1, 1]"});
