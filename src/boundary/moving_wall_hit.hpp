@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 
+#include "boundary/clock_step.hpp"
 #include "boundary/shear_protocol.hpp"
 
 namespace granule {
@@ -74,7 +75,7 @@ template <typename Flight>
       next = next_break - now;
       while (now + next < next_break) next = std::nextafter(next, kInf);
     }
-    while (now + next <= t) next = std::nextafter(next, kInf);  // the clock always moves on
+    next = clock_moves_on(now, tau, next);
     if (!(next < horizon)) return kInf;
     tau = next;
   }

@@ -19,6 +19,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "boundary/clock_step.hpp"
 #include "geometry/vec.hpp"
 #include "motion/ballistic.hpp"
 #include "physics/collision_time.hpp"
@@ -62,8 +63,7 @@ double obstacle_hit(const Flight& flight, const Vec<D>& d, const Vec<D>& v, doub
       const double rate = distance > 0.0 ? dot(at, velocity) / distance : 0.0;
       const double ahead = std::max(gap, 0.0);
       const double s = (rate + std::sqrt(rate * rate + 2.0 * field * ahead)) / field;
-      double next = tau + s;
-      while (now + next <= now + tau) next = std::nextafter(next, kInf);  // the clock always moves on
+      const double next = clock_moves_on(now, tau, tau + s);
       if (!(next < horizon)) return kInf;
       tau = next;
     }
