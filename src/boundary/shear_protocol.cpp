@@ -17,6 +17,40 @@ double ramp_excess(double x) {
   return x + std::expm1(-x);
 }
 
+// The square and triangle waves of unit amplitude and period 1 at phase x (Waveform).
+double piecewise_wave(Waveform shape, double x) {
+  const double f = x - std::floor(x);
+  if (shape == Waveform::kSquare) return f < 0.5 ? 1.0 : -1.0;
+  return f < 0.25 ? 4.0 * f : f < 0.75 ? 2.0 - 4.0 * f : 4.0 * f - 4.0;
+}
+
+// Where the square wave jumps (every half cycle) and the triangle wave turns (a quarter cycle on,
+// every half cycle), in cycles.
+double first_break_phase(Waveform shape) { return shape == Waveform::kSquare ? 0.0 : 0.25; }
+
+// The first break of a piecewise wave strictly after phase x.
+double next_break_phase(Waveform shape, double x) {
+  const double offset = first_break_phase(shape);
+  double next = offset + 0.5 * (std::floor((x - offset) / 0.5) + 1.0);
+  while (next <= x) next += 0.5;
+  return next;
+}
+
+// ∫ w over the phases [x0, x1] of a piecewise wave, piece by piece by the midpoint rule (exact on
+// constant and linear pieces; whole cycles add nothing).
+double piecewise_wave_integral(Waveform shape, double x0, double x1) {
+  const double cycles = std::floor(x1 - x0);
+  double x = x0;
+  const double end = x1 - cycles;
+  double sum = 0.0;
+  while (x < end) {
+    const double to = std::min(end, next_break_phase(shape, x));
+    sum += (to - x) * piecewise_wave(shape, 0.5 * (x + to));
+    x = to;
+  }
+  return sum;
+}
+
 }  // namespace
 
 ShearHistory scaled(const ShearHistory& history, double factor) {
@@ -76,8 +110,25 @@ double ShearProtocol::base_integral(double a, double b) const {
 
 double ShearProtocol::velocity(double t) const {
   double u = base_velocity(t);
-  if (const auto& osc = history_.oscillation; osc && t >= osc->start && t <= osc->end()) {
-    u += osc->amplitude * std::sin(2.0 * std::numbers::pi * (t - osc->start) / osc->period);
+  // A square or triangle wave stops at its end (where it may jump back to 0), the sine, continuous
+  // there, includes it.
+  if (const auto& osc = history_.oscillation;
+      osc && t >= osc->start && (t < osc->end() || (t == osc->end() && osc->waveform == Waveform::kSine))) {
+    if (osc->waveform == Waveform::kSine) {
+      u += osc->amplitude * std::sin(2.0 * std::numbers::pi * (t - osc->start) / osc->period);
+    } else if (osc->waveform == Waveform::kTriangle) {
+      u += osc->amplitude * piecewise_wave(osc->waveform, (t - osc->start) / osc->period);
+    } else {
+      // The square wave's side of a jump is decided by the jump's time as next_break gives it, not by
+      // the rounded phase: from that instant on, the value after it.
+      const double x = (t - osc->start) / osc->period;
+      const double next = next_break_phase(osc->waveform, x);
+      const double previous = next - 0.5;
+      const double inside = osc->start + osc->period * next <= t       ? next + 0.25
+                            : osc->start + osc->period * previous > t ? previous - 0.25
+                                                                      : previous + 0.25;
+      u += osc->amplitude * piecewise_wave(osc->waveform, inside);
+    }
   }
   return u;
 }
@@ -87,10 +138,13 @@ double ShearProtocol::integral(double a, double b) const {
   if (const auto& osc = history_.oscillation) {
     const double u = std::max(a, osc->start);
     const double w = std::min(b, osc->end());
-    if (w > u) {
+    if (w > u && osc->waveform == Waveform::kSine) {
       // A/k (cos φ(u) − cos φ(w)) as a product of sines: no cancellation on short segments.
       const double k = 2.0 * std::numbers::pi / osc->period;
       sum += 2.0 * osc->amplitude / k * std::sin(0.5 * k * (u + w - 2.0 * osc->start)) * std::sin(0.5 * k * (w - u));
+    } else if (w > u) {
+      sum += osc->amplitude * osc->period *
+             piecewise_wave_integral(osc->waveform, (u - osc->start) / osc->period, (w - osc->start) / osc->period);
     }
   }
   return sum;
@@ -122,6 +176,14 @@ double ShearProtocol::next_break(double t) const {
   if (const auto& osc = history_.oscillation) {
     if (osc->start > t) next = std::min(next, osc->start);
     if (osc->end() > t) next = std::min(next, osc->end());
+    if (osc->waveform != Waveform::kSine && t >= osc->start && osc->end() > t) {
+      // A jump or turn of the wave: the next whole-cycle count of its phase, mapped back to time.
+      const double phase = next_break_phase(osc->waveform, (t - osc->start) / osc->period);
+      double at = osc->start + osc->period * phase;
+      if (at <= t) at = osc->start + osc->period * (phase + 0.5);  // t is that break, its phase rounded below it
+      while (at <= t) at = std::nextafter(at, kInf);
+      next = std::min(next, at);
+    }
   }
   return next;
 }
@@ -139,7 +201,9 @@ double ShearProtocol::slope_bound(double t) const {
     bound = std::abs(steady_) / history_.ramp_time * std::exp(-std::max(t, 0.0) / history_.ramp_time);
   }
   if (const auto& osc = history_.oscillation; osc && t >= osc->start && t < osc->end()) {
-    bound += 2.0 * std::numbers::pi * std::abs(osc->amplitude) / osc->period;
+    // |dU/dt| ≤ 2π|A|/P for the sine, 4|A|/P for the triangle; the square wave is flat between jumps.
+    const double peak_slope = osc->waveform == Waveform::kSine ? 2.0 * std::numbers::pi : osc->waveform == Waveform::kTriangle ? 4.0 : 0.0;
+    bound += peak_slope * std::abs(osc->amplitude) / osc->period;
   }
   return bound;
 }

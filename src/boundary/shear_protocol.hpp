@@ -15,12 +15,18 @@
 
 namespace granule {
 
-// U += A sin(2π (t − start)/P) for start ≤ t ≤ start + cycles·P.
+// The shape w(x) of an oscillation over one cycle x ∈ [0, 1), each starting at 0 and rising, with
+// peak 1 and mean 0: sin 2πx; a square wave, +1 on the first half and −1 on the second; a triangle
+// wave, 4x up to ¼, 2 − 4x up to ¾, 4x − 4 after.
+enum class Waveform { kSine, kSquare, kTriangle };
+
+// U += A w((t − start)/P) for start ≤ t ≤ start + cycles·P.
 struct ShearOscillation {
   double amplitude = 0.0;  // A
   double period = 1.0;     // P
   double start = 0.0;      // t_s
   double cycles = 1.0;     // n (may be fractional)
+  Waveform waveform = Waveform::kSine;
   double end() const { return start + cycles * period; }
 };
 

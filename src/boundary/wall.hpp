@@ -19,16 +19,24 @@ struct WallPositionPoint {
   double displacement = 0.0;
 };
 
+// The shape of a wall's vibration h(t) between 0 and 2A over a period 1/f, each starting at the face:
+// a sine, h = A (1 − cos 2πft) (peak acceleration (2πf)² A); a triangle, h rising at 4Af for half a
+// period and falling back at 4Af (the floor's velocity a square wave: a sawtooth-like drive whose
+// every hit is a line against a parabola); or bi-parabolic, h made of parabolic arcs of acceleration
+// ±32Af², so that the floor's velocity is a triangle wave of peak 8Af (the constant-acceleration
+// drive of vibrated-bed simulations, whose peak acceleration Γ g = 32Af² is the sine's over ≈ 1.23).
+enum class VibrationShape { kSine, kTriangle, kBiparabolic };
+
 // How a wall moves normal to itself over the production time t (it rests at the box face, h = 0,
 // during the elastic pre-run): its displacement into the box h(t) ≥ 0 is the sum of
-//  • a sinusoidal vibration h = A (1 − cos 2πft), which starts at rest at the face and moves the
-//    wall at 2πfA sin 2πft (peak acceleration Γ g = (2πf)² A), and
+//  • a vibration of amplitude A and frequency f, h between 0 and 2A in the shape `shape`, and
 //  • a schedule of points (t, h), h joined linearly between them (the wall's velocity constant on
 //    each piece), 0 before the first point and held after the last.
 struct WallMotion {
   double amplitude = 0.0;  // A ≥ 0
   double frequency = 0.0;  // f > 0 when A > 0
   std::vector<WallPositionPoint> schedule;  // times increasing, the first h = 0
+  VibrationShape shape = VibrationShape::kSine;
 
   bool moves() const { return amplitude > 0.0 || !schedule.empty(); }
   // The wall's velocity into the box, dh/dt, as a protocol of the Lees–Edwards drives of Chapter 4

@@ -9,9 +9,16 @@ namespace granule {
 ShearProtocol WallMotion::velocity() const {
   ShearHistory history;
   if (amplitude > 0.0) {
-    // u = 2πfA sin 2πft for all t ≥ 0, whose integral from 0 is A (1 − cos 2πft).
-    history.oscillation = ShearOscillation{2.0 * std::numbers::pi * frequency * amplitude, 1.0 / frequency, 0.0,
-                                           std::numeric_limits<double>::infinity()};
+    // The velocity dh/dt for all t ≥ 0: 2πfA sin 2πft, whose integral from 0 is A (1 − cos 2πft); a
+    // square wave of 4Af, whose integral is the triangle; a triangle wave of peak 8Af, whose integral
+    // (its own integral over a cycle's first half is 8Af/(4f) = 2A) is the bi-parabolic h.
+    const Waveform waveform = shape == VibrationShape::kSine       ? Waveform::kSine
+                              : shape == VibrationShape::kTriangle ? Waveform::kSquare
+                                                                   : Waveform::kTriangle;
+    const double peak = shape == VibrationShape::kSine       ? 2.0 * std::numbers::pi * frequency * amplitude
+                        : shape == VibrationShape::kTriangle ? 4.0 * frequency * amplitude
+                                                             : 8.0 * frequency * amplitude;
+    history.oscillation = ShearOscillation{peak, 1.0 / frequency, 0.0, std::numeric_limits<double>::infinity(), waveform};
   }
   if (!schedule.empty()) {
     // h piecewise linear: a velocity step at every point (two points at one time), 0 outside.

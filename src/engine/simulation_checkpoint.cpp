@@ -75,6 +75,7 @@ std::map<std::string, double> surface_parameters(const SystemParams& p, int dime
       if (!wall.motion.moves()) continue;
       out[name + "_vibration_amplitude"] = wall.motion.amplitude;
       out[name + "_vibration_frequency"] = wall.motion.frequency;
+      if (wall.motion.shape != VibrationShape::kSine) out[name + "_vibration_shape"] = static_cast<double>(wall.motion.shape);
       for (std::size_t k = 0; k < wall.motion.schedule.size(); ++k) {
         out[name + "_schedule_time_" + std::to_string(k)] = wall.motion.schedule[k].time;
         out[name + "_schedule_displacement_" + std::to_string(k)] = wall.motion.schedule[k].displacement;
@@ -110,7 +111,9 @@ void check_surfaces_match(const StateArchive& archive, const std::string& prefix
   }
   for (const char* feature : {"inertia_factor", "walls_x", "walls_y", "walls_z", "gravity_x", "wall_0_vibration_amplitude",
                               "wall_1_vibration_amplitude", "wall_2_vibration_amplitude", "wall_3_vibration_amplitude",
-                              "wall_4_vibration_amplitude", "wall_5_vibration_amplitude"}) {
+                              "wall_4_vibration_amplitude", "wall_5_vibration_amplitude", "wall_0_vibration_shape",
+                              "wall_1_vibration_shape", "wall_2_vibration_shape", "wall_3_vibration_shape",
+                              "wall_4_vibration_shape", "wall_5_vibration_shape"}) {
     if (archive.contains(prefix + feature) && !expected.count(feature)) {
       throw std::runtime_error(std::string("checkpoint was written with ") + feature + ", which the configuration does not have");
     }

@@ -67,12 +67,22 @@ std::vector<std::string> describe_surfaces(const RunConfig& config) {
     }
     const WallMotion& m = wall.motion;
     if (m.amplitude > 0.0) {
-      const double peak = std::pow(2.0 * std::numbers::pi * m.frequency, 2) * m.amplitude;
       const double g = std::abs(s.gravity[static_cast<std::size_t>(face / 2)]);
-      lines.push_back(fmt::format("{} vibrates into the box: h = A (1 − cos 2πft), A = {}, f = {}: peak speed {:.4g}, peak "
-                                  "acceleration {:.4g}{}", name, m.amplitude, m.frequency,
-                                  2.0 * std::numbers::pi * m.frequency * m.amplitude, peak,
-                                  g > 0.0 ? fmt::format(" (Γ = {:.3g} g)", peak / g) : std::string{}));
+      const auto gamma = [&](double peak) { return g > 0.0 ? fmt::format(" (Γ = {:.3g} g)", peak / g) : std::string{}; };
+      if (m.shape == VibrationShape::kSine) {
+        const double peak = std::pow(2.0 * std::numbers::pi * m.frequency, 2) * m.amplitude;
+        lines.push_back(fmt::format("{} vibrates into the box: h = A (1 − cos 2πft), A = {}, f = {}: peak speed {:.4g}, peak "
+                                    "acceleration {:.4g}{}", name, m.amplitude, m.frequency,
+                                    2.0 * std::numbers::pi * m.frequency * m.amplitude, peak, gamma(peak)));
+      } else if (m.shape == VibrationShape::kTriangle) {
+        lines.push_back(fmt::format("{} vibrates into the box: h a triangle wave from 0 to 2A, A = {}, f = {}: speed ±{:.4g}, "
+                                    "turning at once every half period", name, m.amplitude, m.frequency, 4.0 * m.frequency * m.amplitude));
+      } else {
+        const double peak = 32.0 * m.frequency * m.frequency * m.amplitude;
+        lines.push_back(fmt::format("{} vibrates into the box: h bi-parabolic from 0 to 2A, A = {}, f = {}: peak speed {:.4g}, "
+                                    "acceleration ±{:.4g}{}", name, m.amplitude, m.frequency, 8.0 * m.frequency * m.amplitude, peak,
+                                    gamma(peak)));
+      }
     }
     if (!m.schedule.empty()) {
       std::string points;

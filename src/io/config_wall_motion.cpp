@@ -22,7 +22,7 @@ std::string wall_face_name(int face) { return fmt::format("{}{}", "xyz"[face / 2
 void resolve_wall_motion(const ConfigReader& in, bool walls, RunConfig& c) {
   if (!in.has(kKey)) return;
   if (!walls) throw ConfigError{fmt::format("{} requires boundary.kind = \"walls\" (only a wall moves)", kKey)};
-  in.table_with_keys(kKey, {"wall", "amplitude", "frequency", "schedule"});
+  in.table_with_keys(kKey, {"wall", "amplitude", "frequency", "shape", "schedule"});
   SystemParams& s = c.system;
   std::set<std::string> faces;
   for (int face = 0; face < 2 * s.dimension; ++face) {
@@ -44,6 +44,11 @@ void resolve_wall_motion(const ConfigReader& in, bool walls, RunConfig& c) {
     throw ConfigError{fmt::format("{}.frequency = {} needs {} = A > 0", kKey, *frequency, amplitude_key)};
   }
   motion.frequency = frequency.value_or(0.0);
+  const std::string shape_key = std::string(kKey) + ".shape";
+  if (const auto shape = in.text(shape_key, {"sine", "triangle", "biparabolic"})) {
+    if (motion.amplitude == 0.0) throw ConfigError{fmt::format("{} = \"{}\" needs {} = A > 0", shape_key, *shape, amplitude_key)};
+    motion.shape = *shape == "triangle" ? VibrationShape::kTriangle : *shape == "biparabolic" ? VibrationShape::kBiparabolic : VibrationShape::kSine;
+  }
   for (const auto& [t, h] : in.number_pairs(std::string(kKey) + ".schedule", "[t, h]")) {
     const bool first = motion.schedule.empty();
     if (!kTimes.contains(t) || !displacements.contains(h) || (first && h != 0.0) ||
@@ -69,6 +74,9 @@ std::string wall_motion_to_toml(const RunConfig& c) {
     if (!m.moves()) continue;
     std::string out = fmt::format("wall_motion = {{ wall = \"{}\"", wall_face_name(face));
     if (m.amplitude > 0.0) out += fmt::format(", amplitude = {:.17g}, frequency = {:.17g}", m.amplitude, m.frequency);
+    if (m.amplitude > 0.0 && m.shape != VibrationShape::kSine) {
+      out += fmt::format(", shape = \"{}\"", m.shape == VibrationShape::kTriangle ? "triangle" : "biparabolic");
+    }
     if (!m.schedule.empty()) {
       std::string points;
       for (const WallPositionPoint& p : m.schedule) {

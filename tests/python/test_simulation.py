@@ -235,3 +235,24 @@ def test_a_vibrated_floor_from_a_dict(small_config):
     with pytest.raises(ValueError, match="boundary.wall_motion.wall"):
         granule.Simulation({**config, "boundary": {**config["boundary"], "wall_motion": {"wall": "x0", "amplitude": 0.1,
                                                                                       "frequency": 1.0}}})
+
+
+def test_a_biparabolic_floor_from_a_dict(small_config):
+    """A floor driven in parabolic arcs, h = 16Ax² up to a quarter cycle x, 8A(2x − 2x² − ¼) up to three
+    quarters and 16A(1 − x)² after (written out here), stays below every grain."""
+    amplitude, frequency = 0.02, 3.0
+    config = {**small_config,
+              "system": {"particles": 300, "diameter": 0.02, "box": [1.0, 2.0], "restitution": 0.9,
+                         "gravity": [0.0, -1.0], "tc_duration": 1e-5},
+              "boundary": {"kind": "walls", "wall_axes": ["y"],
+                           "wall_motion": {"wall": "y0", "amplitude": amplitude, "frequency": frequency,
+                                           "shape": "biparabolic"}},
+              "initial": {"temperature": 0.05, "equilibrate": 0}}
+    sim = granule.Simulation(config)
+    assert 'shape = "biparabolic"' in sim.config_toml
+    for stop in (0.9, 1.7, 2.3):
+        sim.run(until_time=stop)
+        x = frequency * sim.time % 1.0
+        floor = 16 * amplitude * x * x if x < 0.25 else (
+            8 * amplitude * (2 * x - 2 * x * x - 0.25) if x < 0.75 else 16 * amplitude * (1 - x) ** 2)
+        assert float(np.min(sim.positions[:, 1])) >= 0.01 + floor - 1e-12

@@ -161,6 +161,26 @@ TEST(ConfigWalls, AWallMovesNormalToItselfByAVibrationOrASchedule) {
   expect_refused({kWalls, key + "={ wall = \"y1\", schedule = [[0, 1]] }"}, {key + ".schedule point [0, 1]", "starting from h = 0"});
   expect_refused({kWalls, key + "={ wall = \"y1\", schedule = [[0, 0], [0, 1]] }"}, {"increasing order"});
   expect_refused({kWalls, key + "={ wall = \"y0\", amplitude = 1, frequency = 1, speed = 2 }"}, {key, "speed"});
+  expect_refused({kWalls, key + "={ wall = \"y0\", amplitude = 1, frequency = 1, shape = \"square\" }"},
+                 {key + ".shape", "sine", "triangle", "biparabolic"});
+  expect_refused({kWalls, key + "={ wall = \"y1\", schedule = [[0, 0], [1, 1]], shape = \"triangle\" }"}, {key + ".shape", "amplitude"});
+}
+
+// The shape of the vibration, read back from the echo; the drive's velocity wave gives h between 0
+// and 2A: its integral over the first half period.
+TEST(ConfigWalls, AVibrationTakesTheShapeOfASineATriangleOrParabolicArcs) {
+  for (const auto& [name, shape] : {std::pair{"sine", VibrationShape::kSine}, std::pair{"triangle", VibrationShape::kTriangle},
+                                    std::pair{"biparabolic", VibrationShape::kBiparabolic}}) {
+    const RunConfig c = accepted({kWalls, "system.gravity=[0, -1]", "system.box=[8.0, 8.0]",
+                                  std::string("boundary.wall_motion={ wall = \"y0\", amplitude = 0.5, frequency = 2, shape = \"") + name + "\" }"});
+    const WallMotion& m = c.system.wall[2].motion;
+    EXPECT_EQ(m.shape, shape) << name;
+    EXPECT_NEAR(m.velocity().integral(0.0, 0.25), 1.0, 1e-15) << name << ": h at half a period is 2A";
+    EXPECT_NEAR(m.velocity().integral(0.0, 0.5), 0.0, 1e-15) << name << ": back at the face after a period";
+    const ConfigResult again = parse_config(to_toml(c), {});
+    ASSERT_TRUE(again.config) << again.error;
+    EXPECT_EQ(again.config->system.wall[2].motion.shape, shape) << name;
+  }
 }
 
 TEST(ConfigGravity, FiniteVectorOfTheDimension) {

@@ -38,10 +38,48 @@ std::vector<Named> protocols() {
   kick.oscillation = ShearOscillation{1.5, 0.4, 0.3, 2.5};
   ShearHistory ramp_and_kick = ramp;
   ramp_and_kick.oscillation = ShearOscillation{-0.8, 0.25, 1.0, 3.0};
+  // The same kicks as a square wave (a jump every half period) and a triangle wave (a turn a quarter
+  // period in, then every half period).
+  ShearHistory square_kick = kick;
+  square_kick.oscillation->waveform = Waveform::kSquare;
+  ShearHistory ramp_and_triangle = ramp_and_kick;
+  ramp_and_triangle.oscillation->waveform = Waveform::kTriangle;
+  std::vector<double> jumps, turns;
+  for (int k = 0; k <= 5; ++k) jumps.push_back(0.3 + 0.2 * k);
+  turns.push_back(1.0);
+  for (int k = 0; k < 6; ++k) turns.push_back(1.0 + 0.0625 + 0.125 * k);
+  turns.push_back(1.75);
   return {{"ramp", 5.0, ramp, {}},
           {"schedule", 0.0, schedule, {0.5, 1.0, 2.5}},
           {"kick", 2.0, kick, {0.3, 1.3}},
-          {"ramp_and_kick", 5.0, ramp_and_kick, {1.0, 1.75}}};
+          {"ramp_and_kick", 5.0, ramp_and_kick, {1.0, 1.75}},
+          {"square_kick", 2.0, square_kick, jumps},
+          {"ramp_and_triangle", 5.0, ramp_and_triangle, turns}};
+}
+
+// The square and triangle waves at their defining phases, written out here: U₀ + A w(x).
+TEST(ShearProtocol, SquareAndTriangleWavesAtTheirDefiningPhases) {
+  const std::vector<Named> all = protocols();
+  const ShearProtocol square(all[4].steady, all[4].history);  // A = 1.5, P = 0.4 from 0.3
+  EXPECT_EQ(square.velocity(0.35), 2.0 + 1.5);
+  EXPECT_EQ(square.velocity(0.55), 2.0 - 1.5);
+  EXPECT_EQ(square.velocity(1.31), 2.0);  // after its 2.5 cycles
+  EXPECT_EQ(square.slope_bound(0.35), 0.0) << "flat between jumps";
+  EXPECT_NEAR(square.next_break(0.35), 0.5, 1e-15);
+  EXPECT_NEAR(square.integral(0.3, 0.5), 1.5 * 0.2 + 2.0 * 0.2, 1e-15);
+  const ShearProtocol triangle(all[5].steady, all[5].history);  // A = −0.8, P = 0.25 from 1.0, after a ramp
+  const double base = 5.0 * (1.0 - std::exp(-1.03125 / 0.7));
+  EXPECT_NEAR(triangle.velocity(1.03125), base - 0.8 * 0.5, 1e-14) << "an eighth of a period: half way up";
+  EXPECT_NEAR(triangle.next_break(1.03125), 1.0625, 1e-15);
+  EXPECT_NEAR(triangle.next_break(1.0625), 1.1875, 1e-15);
+  // The triangle's slope 4A/P is the bound, with the ramp's own.
+  EXPECT_NEAR(triangle.slope_bound(1.1), 4.0 * 0.8 / 0.25 + 5.0 / 0.7 * std::exp(-1.1 / 0.7), 1e-12);
+  // Many cycles on, whole cycles add nothing: ∫ over 7 periods of the wave alone is 0.
+  ShearHistory wave_alone;
+  wave_alone.oscillation = ShearOscillation{1.0, 0.25, 0.0, 1000.0, Waveform::kTriangle};
+  const ShearProtocol alone(0.0, wave_alone);
+  EXPECT_NEAR(alone.integral(3.0, 3.0 + 7 * 0.25), 0.0, 1e-14);
+  EXPECT_NEAR(alone.integral(100.0, 100.0625), 0.25 * 2.0 * 0.25 * 0.25, 1e-13) << "a quarter cycle: ∫ 4x dx to ¼";
 }
 
 TEST(ShearProtocol, ClosedFormIntegralMatchesQuadrature) {

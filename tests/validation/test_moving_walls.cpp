@@ -1,9 +1,9 @@
 // Walls that move, against results computed here independently of the engine:
-//  • a grain on a sinusoidally vibrated floor under gravity: each bounce of the engine is where an
+//  • a grain on a floor vibrated as a sine, a triangle or bi-parabolically, under gravity: each bounce of the engine is where an
 //    independent root search (dense sampling of the gap, then bisection) puts it, starting from the
 //    engine's previous bounce, and leaves at u − e_w (v − u), u the floor's velocity then (the
 //    bounce map of the vibrated bed, free of the chaos that amplifies round-off over many bounces);
-//  • a vibrated inelastic gas: the energy changes by exactly the work the floor did plus what the
+//  • a vibrated inelastic gas (each shape): the energy changes by exactly the work the floor did plus what the
 //    collisions took, the momentum by the walls' impulses plus gravity's, to round-off, and no
 //    grain is ever in the moving floor (the engine's invariants at every stop);
 //  • a floor raised by a schedule several cells into a gas (a piston): the same, with the floor's
@@ -29,12 +29,28 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kNoCollisionLimit = std::numeric_limits<std::int64_t>::max();
 
-// The floor's displacement h = A (1 − cos 2πft) and velocity, written out here.
+// The floor's displacement h and velocity, written out here from the phase x of the cycle: the sine
+// A (1 − cos 2πx); the triangle 4Ax up to ½ and 4A(1 − x) after; the bi-parabolic 16Ax² up to ¼,
+// 8A(2x − 2x² − ¼) up to ¾ and 16A(1 − x)² after (arcs of acceleration ±32Af²).
 struct Vibration {
   double amplitude, frequency;
-  double h(double t) const { return amplitude * (1.0 - std::cos(2.0 * std::numbers::pi * frequency * t)); }
+  VibrationShape shape = VibrationShape::kSine;
+  double phase(double t) const { return frequency * t - std::floor(frequency * t); }
+  double h(double t) const {
+    const double x = phase(t), a = amplitude;
+    switch (shape) {
+      case VibrationShape::kSine: return a * (1.0 - std::cos(2.0 * std::numbers::pi * frequency * t));
+      case VibrationShape::kTriangle: return x < 0.5 ? 4.0 * a * x : 4.0 * a * (1.0 - x);
+      default: return x < 0.25 ? 16.0 * a * x * x : x < 0.75 ? 8.0 * a * (2.0 * x - 2.0 * x * x - 0.25) : 16.0 * a * (1.0 - x) * (1.0 - x);
+    }
+  }
   double u(double t) const {
-    return 2.0 * std::numbers::pi * frequency * amplitude * std::sin(2.0 * std::numbers::pi * frequency * t);
+    const double x = phase(t), af = amplitude * frequency;
+    switch (shape) {
+      case VibrationShape::kSine: return 2.0 * std::numbers::pi * af * std::sin(2.0 * std::numbers::pi * frequency * t);
+      case VibrationShape::kTriangle: return x < 0.5 ? 4.0 * af : -4.0 * af;
+      default: return x < 0.25 ? 32.0 * af * x : x < 0.75 ? 16.0 * af * (1.0 - 2.0 * x) : 32.0 * af * (x - 1.0);
+    }
   }
 };
 
@@ -73,15 +89,17 @@ Simulation<D> driven_grain(const SystemParams& p, double y, std::array<double, 2
   return sim;
 }
 
+// Γ = (2πf)² A / g ≈ 2 for the sine, 32Af²/g ≈ 1.1 for the bi-parabolic: the grain is thrown every
+// cycle or two, never as high as the lid.
 template <int D>
-void check_bounce_map() {
+void check_bounce_map(VibrationShape shape = VibrationShape::kSine) {
   SystemParams p = one_grain_box<D>(0.02, 1.0);
   p.renumber_every = 0.0;  // one grain in a fine grid: nothing to gain
   const double e_w = 0.85, g = 1.0;
-  const Vibration floor{0.03, 1.3};  // Γ = (2πf)² A / g ≈ 2: the grain is thrown every cycle or two
+  const Vibration floor{shape == VibrationShape::kBiparabolic ? 0.02 : 0.03, 1.3, shape};
   add_walls(p, 1, e_w, -1.0);
   p.gravity[1] = -g;
-  p.wall[2].motion = {floor.amplitude, floor.frequency, {}};
+  p.wall[2].motion = {floor.amplitude, floor.frequency, {}, shape};
   const double y_start = 0.4, vx = 0.07;
   WallLog<D> log;
   Simulation<D> sim = driven_grain<D>(p, y_start, {vx, 0.0}, log);
@@ -105,11 +123,21 @@ void check_bounce_map() {
     u0 = hit.velocity_after[1];
   }
   sim.check_invariants();
-  std::printf("[%dD] %zu bounces on the vibrated floor, each where the independent search puts it\n", D, log.hits.size());
+  std::printf("[%dD, shape %d] %zu bounces on the vibrated floor, each where the independent search puts it\n", D,
+              static_cast<int>(shape), log.hits.size());
 }
 
 TEST(MovingWalls, ADiskOnAVibratedFloorBouncesAsTheIndependentBounceMapSays) { check_bounce_map<2>(); }
 TEST(MovingWalls, ASphereOnAVibratedFloorBouncesAsTheIndependentBounceMapSays) { check_bounce_map<3>(); }
+TEST(MovingWalls, ADiskOnATriangleDrivenFloorBouncesAsTheIndependentBounceMapSays) {
+  check_bounce_map<2>(VibrationShape::kTriangle);
+}
+TEST(MovingWalls, ADiskOnABiparabolicFloorBouncesAsTheIndependentBounceMapSays) {
+  check_bounce_map<2>(VibrationShape::kBiparabolic);
+}
+TEST(MovingWalls, ASphereOnABiparabolicFloorBouncesAsTheIndependentBounceMapSays) {
+  check_bounce_map<3>(VibrationShape::kBiparabolic);
+}
 
 // Σ m v over the grains along `axis`.
 double momentum(const ParticleState& s, int axis) {
@@ -166,6 +194,12 @@ TEST(MovingWalls, AVibratedGasOfDisksKeepsExactBudgetsAndNeverEntersTheFloor) {
 }
 TEST(MovingWalls, AVibratedGasOfSpheresKeepsExactBudgetsAndNeverEntersTheFloor) {
   check_driven_gas_budgets<3>({0.04, 2.0, {}}, 3, 10.0);
+}
+TEST(MovingWalls, ABiparabolicallyVibratedGasKeepsExactBudgetsAndNeverEntersTheFloor) {
+  check_driven_gas_budgets<2>({0.02, 3.0, {}, VibrationShape::kBiparabolic}, 4, 10.0);
+}
+TEST(MovingWalls, ATriangleDrivenGasKeepsExactBudgetsAndNeverEntersTheFloor) {
+  check_driven_gas_budgets<2>({0.02, 3.0, {}, VibrationShape::kTriangle}, 4, 10.0);
 }
 // A piston: the floor rises 0.6 (several cells) in one time unit and stays there.
 TEST(MovingWalls, AFloorRaisedByASchedulePushesTheGasUpWithExactBudgets) {
