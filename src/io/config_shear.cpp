@@ -63,7 +63,7 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
     throw ConfigError{fmt::format("boundary.shear_ramp_time = {} needs boundary.shear_velocity = U₀ ≠ 0 to ramp to",
                                   h.ramp_time)};
   }
-  if (in.table_with_keys("boundary.shear_oscillation", {"amplitude", "period", "start", "cycles"})) {
+  if (in.table_with_keys("boundary.shear_oscillation", {"amplitude", "period", "start", "cycles", "waveform"})) {
     ShearOscillation o;
     const auto amplitude = in.number_if("boundary.shear_oscillation.amplitude", speed_allowed, speeds);
     const auto period = in.number("boundary.shear_oscillation.period", kDurations);
@@ -75,6 +75,8 @@ double resolve_protocol(const ConfigReader& in, RunConfig& c) {
     o.period = *period;
     o.start = in.number("boundary.shear_oscillation.start", kTimes).value_or(0.0);
     o.cycles = in.number("boundary.shear_oscillation.cycles", kDurations).value_or(1.0);
+    const std::string waveform = in.text("boundary.shear_oscillation.waveform", {"sine", "square", "triangle"}).value_or("sine");
+    o.waveform = waveform == "square" ? Waveform::kSquare : waveform == "triangle" ? Waveform::kTriangle : Waveform::kSine;
     if (!std::isfinite(o.end())) throw ConfigError{"boundary.shear_oscillation ends beyond the largest finite time"};
     h.oscillation = o;
   }
@@ -148,8 +150,9 @@ std::string speeds_to_toml(const RunConfig& c) {
   }
   if (h.ramp_time > 0.0) out += fmt::format("shear_ramp_time = {:.17g}\n", h.ramp_time);
   if (const auto& o = h.oscillation) {
-    out += fmt::format("shear_oscillation = {{ amplitude = {:.17g}, period = {:.17g}, start = {:.17g}, cycles = {:.17g} }}\n",
-                       o->amplitude, o->period, o->start, o->cycles);
+    const char* waveform = o->waveform == Waveform::kSquare ? ", waveform = \"square\"" : o->waveform == Waveform::kTriangle ? ", waveform = \"triangle\"" : "";
+    out += fmt::format("shear_oscillation = {{ amplitude = {:.17g}, period = {:.17g}, start = {:.17g}, cycles = {:.17g}{} }}\n",
+                       o->amplitude, o->period, o->start, o->cycles, waveform);
   }
   if (c.lees_edwards) out += fmt::format("shear_tolerance = {:.17g}\n", h.tolerance);
   out += "\n[initial]\n";

@@ -138,6 +138,17 @@ TEST(ConfigWalls, WallDrivesTakeTheShearProtocolsAtHalfTheirVelocity) {
   const ConfigResult again = parse_config(to_toml(kick), {});
   ASSERT_TRUE(again.config) << again.error;
   EXPECT_EQ(again.config->system.wall[2].along.oscillation->amplitude, -0.2);
+  // A square kick: +A for the first half period, −A for the second, read back from the echo.
+  const RunConfig square = accepted({kWalls, "boundary.shear_velocity=1",
+                                     "boundary.shear_oscillation={ amplitude = 0.4, period = 2, waveform = \"square\" }"});
+  const ShearProtocol upper(square.system.wall[3].velocity[0], square.system.wall[3].along);
+  EXPECT_DOUBLE_EQ(upper.velocity(0.5), 0.5 + 0.2);
+  EXPECT_DOUBLE_EQ(upper.velocity(1.5), 0.5 - 0.2);
+  const ConfigResult square_again = parse_config(to_toml(square), {});
+  ASSERT_TRUE(square_again.config) << square_again.error;
+  EXPECT_EQ(square_again.config->system.wall[3].along.oscillation->waveform, Waveform::kSquare);
+  expect_refused({kWalls, "boundary.shear_oscillation={ amplitude = 0.4, period = 2, waveform = \"saw\" }"},
+                 {"boundary.shear_oscillation.waveform", "sine", "square", "triangle"});
 }
 
 TEST(ConfigWalls, AWallMovesNormalToItselfByAVibrationOrASchedule) {
