@@ -59,7 +59,7 @@ seeds = {5}
 }
 
 std::vector<RunGroup> appendix_c_runs(Scale scale) {
-  const int seeds = by_scale(scale, 1, 2, 2, 1);
+  const int seeds = by_scale(scale, 1, 3, 3, 1);
   return {
       {"free_cooling", spheres_toml(scale, 120, by_scale(scale, 15.0, 60.0, 100.0, 200.0), by_scale(scale, 1, 3, 2, 1), "")},
       {"shear", spheres_toml(scale, 121, by_scale(scale, 15.0, 100.0, 150.0, 200.0), seeds, R"([boundary]

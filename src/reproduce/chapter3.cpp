@@ -33,7 +33,7 @@ system.restitution = [{2}]
 seeds = {3}
 )",
                                       by_scale(scale, 400, 2000, 20000, 200000), by_scale(scale, 30, 200, 200, 200),
-                                      fmt::join(kRestitutions, ", "), by_scale(scale, 1, 2, 2, 1))}};
+                                      fmt::join(kRestitutions, ", "), by_scale(scale, 1, 3, 3, 1))}};
 }
 
 StudyOutcome evaluate_chapter3(Scale, const StudyOutputs& outputs) {

@@ -95,7 +95,7 @@ every_collisions_per_particle = {3}
 seeds = {4}
 )",
                                                                h.initial, h.length * until_c, until_c / 4.0, until_c / 60.0,
-                                                               by_scale(scale, 1, 2, 3, 2))});
+                                                               by_scale(scale, 1, 3, 3, 3))});
   }
   return groups;
 }

@@ -64,7 +64,7 @@ enabled = false
 seeds = {2}
 )",
                                                                by_scale(scale, 20, 200, 200, 300), snapshot_every(scale),
-                                                               by_scale(scale, 1, 2, 2, 1))});
+                                                               by_scale(scale, 1, 3, 3, 1))});
   }
   return groups;
 }

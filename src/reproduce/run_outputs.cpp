@@ -37,7 +37,7 @@ Estimate mean_over(const std::vector<double>& values) {
   }
   if (e.count == 0) return {kNaN, kNaN, 0};
   e.mean = sum / e.count;
-  if (e.count < 2) {
+  if (e.count < kLeastValuesForAnError) {
     e.error = kNaN;
     return e;
   }

@@ -32,13 +32,17 @@ using GroupOutputs = std::vector<PointOutputs>;
 std::vector<const PointOutputs*> points_with(const GroupOutputs& group, const std::string& key = "",
                                              const std::string& value = "");
 
+inline constexpr int kLeastValuesForAnError = 3;
+
 struct Estimate {
   double mean = 0.0;
-  double error = 0.0;  // standard error; NaN from a single value
+  double error = 0.0;  // standard error; NaN from fewer than three values (two give one degree of freedom)
   int count = 0;
 };
 
-// Mean and standard error of independent values (one per seed); NaN entries are skipped.
+// Mean and standard error of independent values (one per seed); NaN entries are skipped.  No error is
+// quoted from fewer than kLeastValuesForAnError values: from two, the error's own uncertainty is as large as
+// itself, and a verdict would lean on chance.
 Estimate mean_over(const std::vector<double>& values);
 
 // The mean of `value(sample)` over the samples with c in [c_from, c_to] (NaN if none).

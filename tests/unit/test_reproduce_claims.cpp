@@ -166,6 +166,12 @@ TEST(ReproduceStatistics, MeanOverSeedsAndItsStandardError) {
   EXPECT_DOUBLE_EQ(e.mean, 2.0);
   EXPECT_NEAR(e.error, 1.0 / std::sqrt(3.0), 1e-15);  // sample standard deviation 1, over √3
   EXPECT_TRUE(std::isnan(mean_over({4.0}).error));
+  // Two seeds give a mean but no error (one degree of freedom: two nearly equal values would quote a
+  // spuriously tiny one).
+  const Estimate two = mean_over({0.86827, 0.86834});
+  EXPECT_EQ(two.count, 2);
+  EXPECT_DOUBLE_EQ(two.mean, 0.5 * (0.86827 + 0.86834));
+  EXPECT_TRUE(std::isnan(two.error));
 }
 
 TEST(ReproduceStatistics, StraightLineFitOfAnExactLine) {
