@@ -5,7 +5,8 @@
 // - a static gas sheared incrementally forms two layers that converge into a central plug, colder
 //   than the dilute regions beside it, fed by a heat flux towards it (Figs 4.7–4.8, §4.3);
 // - an instantaneous change of U, or a transient periodic kick of a quasihomogeneous flow, leads to
-//   the same kind of plugged state (§4.3, last two paragraphs).
+//   the same kind of plugged state (§4.3, last two paragraphs); the kick at two amplitudes, U₀ and the
+//   "small but finite" 0.1 U₀ (the thesis gives no number).
 // The states are told apart by the mass in the densest band of L_y/5 (uniform gas: 0.2), from the
 // time series (analysis/flow_classification.hpp), and by the streamwise profiles of fields.h5.
 #include <fmt/format.h>
@@ -67,6 +68,11 @@ std::vector<History> histories(Scale scale) {
        "shear_profile = false   # a static gas\ntemperature_over_steady = 1\nequilibrate = 5", 0.0, 1.0},
       {"kick", fmt::format("kick of a quasihomogeneous flow (U₀ + 100 sin, {} periods of {} from t = {})", cycles, period, start),
        fmt::format("shear_velocity = 100.0\nshear_oscillation = {{ amplitude = 100.0, period = {}, start = {}, cycles = {} }}", period,
+                   start, cycles),
+       cold, start + cycles * period, 5.0 / 3.0},
+      // The thesis's "small but finite" perturbation has no amplitude in the text: a tenth of U₀.
+      {"kick_small", fmt::format("small kick of a quasihomogeneous flow (U₀ + 10 sin, {} periods of {} from t = {})", cycles, period, start),
+       fmt::format("shear_velocity = 100.0\nshear_oscillation = {{ amplitude = 10.0, period = {}, start = {}, cycles = {} }}", period,
                    start, cycles),
        cold, start + cycles * period, 5.0 / 3.0},
       // U₀ = 200 is the protocol's last U, so 0.025 T₀(200) = 0.1 T₀(100): the cold start of the others.
@@ -296,6 +302,13 @@ StudyOutcome evaluate_chapter4(Scale scale, const StudyOutputs& outputs) {
                             "thesis §4.3, last paragraph", true);
   kicked.checked += "; the cold start (same seeds, the same run until the kick) is the unkicked control";
   out.claims.push_back(kicked);
+  const History& small_kick = history("kick_small");
+  Claim small_kicked = band_claim(small_kick, measured["kick_small"], "chapter4.kick_small.no_recovery",
+                                  "a small but finite transient periodic kick (the thesis's words; it gives no amplitude: 0.1 U₀ here) of "
+                                  "a quasihomogeneous flow leaves a state resembling Fig 4.8",
+                                  "thesis §4.3, last paragraph", true);
+  small_kicked.checked += "; the kick's period as the strong kick's, \"long relative to the average time between collisions\"";
+  out.claims.push_back(small_kicked);
 
   // Figs 4.5–4.6 as the measure that tells them apart, over c; Figs 4.7–4.8 as ρ(y).
   FigureSeries uniform{"uniform gas", {0.0, 0.0}, {kUniformBand, kUniformBand}, {}, true};
