@@ -80,6 +80,7 @@ struct GoldenCase {
     double wall_tangential_restitution = -1.0;  // > −1: rough walls
     double wall_velocity = 0.0;                 // y walls moving along x at ∓U/2 (a wall-driven shear)
     double floor_amplitude = 0.0, floor_frequency = 0.0;  // A > 0: the floor y0 vibrates (WallMotion)
+    VibrationShape floor_shape = VibrationShape::kSine;
   } surfaces{};
   RestitutionLaw speed_law{};  // how ẽ (and e_w) depend on the impact speed in production
   std::vector<Obstacle> obstacles{};  // fixed obstacles, with their production restitutions
@@ -121,7 +122,7 @@ GoldenRun final_state(const GoldenCase& k, double renumber_every) {
   }
   p.wall[2].velocity[0] = -0.5 * k.surfaces.wall_velocity;
   p.wall[3].velocity[0] = 0.5 * k.surfaces.wall_velocity;
-  p.wall[2].motion = {k.surfaces.floor_amplitude, k.surfaces.floor_frequency, {}};
+  p.wall[2].motion = {k.surfaces.floor_amplitude, k.surfaces.floor_frequency, {}, k.surfaces.floor_shape};
   p.obstacles = k.obstacles;
   if (k.protocol) {
     const double u0 = p.walls[1] ? k.surfaces.wall_velocity : k.shear_velocity;
@@ -226,6 +227,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // spheres sheared by walls ramped and kicked as in Chapter 4.
                       GoldenCase{"vibrated_floor_disks_tc", 1500, 0.15, 0.9, 0.0, 1e-6, 30.0, 41, 0xcd41943094150aaaULL, false, 2, 1.0, -1.0,
                                  {{false, true, false}, {0.0, -1.0, 0.0}, 0.9, -1.0, 0.0, 0.01, 3.0}},
+                      // Spheres on a floor vibrated in parabolic arcs (32Af² ≈ 2 g).
+                      GoldenCase{"biparabolic_floor_spheres_tc", 1500, 0.15, 0.9, 0.0, 1e-6, 30.0, 44, 0x79f8d794141cdc4bULL, false, 3, 1.0, -1.0,
+                                 {{false, true, false}, {0.0, -1.0, 0.0}, 0.9, -1.0, 0.0, 0.005, 3.5, VibrationShape::kBiparabolic}},
                       GoldenCase{"driven_walls_rough_spheres", 1500, 0.2, 0.9, 0.0, 1e-6, 30.0, 42, 0xe3d3b50856b01b20ULL, true, 3, 1.0, 0.4,
                                  {{false, true, false}, {}, 0.9, 0.3, 4.0}},
                       // A flow past obstacles: gravity along x between y walls, three obstacles
