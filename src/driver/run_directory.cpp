@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "io/fields_file.hpp"
+#include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
-#include "io/journaled_file_driver.hpp"
 #include "io/timeseries_csv.hpp"
 
 namespace granule::driver {
@@ -100,9 +100,9 @@ std::string set_aside_run_outputs(const std::string& out, std::int64_t frame) {
   fs::create_directory(aside, error);
   if (error) throw IoError(fmt::format("cannot create {}: {}", aside.string(), error.message()));
   for (const std::string& name : run_output_names()) {
-    // A killed run's last flush first (io/journaled_file_driver.hpp): the journal stays behind.
+    // A killed run's last flush first (h5::recover_partial_file), read from where it is set aside.
     const fs::path growing = fs::path(out) / (name + ".partial");
-    if (fs::exists(growing)) h5::replay_journal(growing.string());
+    if (fs::exists(growing)) h5::recover_partial_file(growing.string());
     for (const char* suffix : {"", ".partial"}) {
       const fs::path from = fs::path(out) / (name + suffix);
       if (!fs::exists(from)) continue;

@@ -12,7 +12,6 @@
 #include "io/hdf5_internal.hpp"
 #include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
-#include "io/journaled_file_driver.hpp"
 
 namespace granule::h5 {
 
@@ -96,11 +95,28 @@ std::vector<hsize_t> select_frame(hid_t space, const std::vector<hsize_t>& dims,
 PartialFile::PartialFile(const std::string& path, const char* format, int format_version, const std::string& granule_version)
     : path_(path), file_(create_partial_file(path, format, format_version, granule_version), H5Fclose) {}
 
+namespace {
+
+// Opens a partial file for growing.  The driver applies a journal a killed run left behind
+// (io/journaled_file_driver.hpp).  HDF5's flushes do not always rewrite the superblock's end of
+// allocated space, so a killed run's chunk index may point beyond the end the superblock states
+// ("addr overflow": H5Dget_storage_size then reports 0 bytes).  The end moves to the bytes on
+// disk, where everything an index on disk refers to lies.
+Handle open_for_growth(const std::string& partial) {
+  Handle file(open_existing(partial, H5F_ACC_RDWR), H5Fclose);
+  check(H5Fincrement_filesize(file.get(), 0), file.get(), "extend to its bytes on disk", partial.c_str());
+  return file;
+}
+
+}  // namespace
+
+void recover_partial_file(const std::string& partial) { open_for_growth(partial).close(); }
+
 PartialFile::PartialFile(const std::string& path, const char* format, std::int64_t keep_frames) : path_(path) {
   const std::string partial = path + ".partial";
   const bool published = !std::filesystem::exists(partial);
   const std::string current = published ? path : partial;
-  if (!published) replay_journal(partial);  // the last flush of a killed run, before anything reads the file
+  if (!published) recover_partial_file(partial);
   {
     Handle file = open_file(current);
     if (read_string_attribute(file.get(), "format") != format) {
@@ -118,11 +134,7 @@ PartialFile::PartialFile(const std::string& path, const char* format, std::int64
   if (published && std::rename(path.c_str(), partial.c_str()) != 0) {
     throw io_error("cannot rename " + path + " to " + partial, errno);
   }
-  file_ = Handle(open_existing(partial, H5F_ACC_RDWR), H5Fclose);
-  // HDF5's flushes do not always rewrite the superblock's end of the file: a killed run's chunk
-  // index may point to chunks beyond it, which HDF5 then refuses ("addr overflow").  The end moves
-  // to the bytes on disk, where every chunk an index on disk refers to lies.
-  check(H5Fincrement_filesize(file_.get(), 0), file_.get(), "extend to its bytes on disk", partial.c_str());
+  file_ = open_for_growth(partial);
   for (const std::string& name : frame_datasets(file_.get())) {
     Handle dataset = open_dataset(file_.get(), name.c_str());
     std::vector<hsize_t> dims = extent(dataset.get(), name.c_str());

@@ -112,7 +112,10 @@ void require_stored(hid_t dataset, hsize_t count, hid_t location, const std::str
   if (count == 0) return;
   const Handle type = read_owned(H5Dget_type(dataset), H5Tclose, location, "read the type of " + object);
   const hsize_t bytes = elements({count, H5Tget_size(type.get())});
+  H5Eclear2(H5E_DEFAULT);
   const hsize_t stored = H5Dget_storage_size(dataset);
+  // 0 is also how HDF5 reports a failed query (a chunk index it cannot read): say why.
+  if (stored == 0 && H5Eget_num(H5E_DEFAULT) > 0) refuse(location, "cannot measure " + object + ": " + failure_reason());
   const hsize_t ratio = stored_ratio(dataset, location, object);
   if (bytes / ratio > stored) {
     refuse(location, object + " needs " + std::to_string(bytes) + " bytes for what its shape claims but stores " +

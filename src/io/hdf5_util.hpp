@@ -72,6 +72,11 @@ void append_frame(hid_t file, const char* name, hid_t type, const void* data, hs
 void append_frame_rows(hid_t file, const char* name, hid_t type, const void* data, hsize_t frame, hsize_t first_row,
                        hsize_t rows);
 
+// Makes the `.partial` file a killed run left readable as it stood at its last flush: applies a
+// journal left behind (io/journaled_file_driver.hpp) and rewrites the superblock's end of
+// allocated space, which HDF5's flushes do not always keep up to date.  Throws IoError.
+void recover_partial_file(const std::string& partial);
+
 // A file of frames written as `<path>.partial` (snapshots, fields): each frame is flushed when
 // complete, and publish() gives the file its final name.  Destroyed unpublished, it leaves
 // `<path>.partial`, closed.
