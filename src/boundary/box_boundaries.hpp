@@ -277,14 +277,6 @@ class BoxBoundaries {
     if (moving(face)) v[face / 2] = (face % 2 == 0 ? 1.0 : -1.0) * normal_[f].velocity(t);
     return v;
   }
-  // How far a grain of radius `radius` at coordinate `position` is into the walls of `axis`
-  // beyond `tolerance` (> 0: it is) at production time t, 0 on an axis with images.
-  double wall_penetration(int axis, double position, double radius, double tolerance, double t) const {
-    if (has_images(axis)) return 0.0;
-    const double inside = radius - tolerance;
-    return std::max(inside + displacement(2 * axis, t) - position,
-                    position - (length(axis) - inside - displacement(2 * axis + 1, t)));
-  }
 
  private:
   // What every prediction reads first, together; the walls' parameters and drives after them.

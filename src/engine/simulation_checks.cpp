@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "boundary/surface_checks.hpp"
 #include "engine/simulation.hpp"
 
 namespace granule {
@@ -19,10 +20,6 @@ constexpr double kDistanceTolerance = 1e-9;
 // predicted delay; grazing collisions make the root ill-conditioned, hence far above 1 ulp.
 constexpr double kDelayTolerance = 1e-6;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The surfaces below this are walls (faces 0 … 5); the last one is the obstacles.
-constexpr int kWalls = BoxBoundaries<2>::kObstacles;
-// The ulps of a box length within which a stored position is known after re-bases and flights.
-constexpr double kRoundOffUlps = 16.0;
 
 // Throws with the parts of the message written one after another (full precision for numbers).
 template <typename... Parts>
@@ -59,16 +56,9 @@ void Simulation<D>::check_invariants() const {
     for (int a = 0; a < D; ++a) finite = finite && std::isfinite(r[a]) && std::isfinite(particles_[at(i)].v[a]);
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", user_id(i), " has a non-finite state");
-    for (int a = 0; a < D; ++a) {  // a grain never passes into a wall beyond round-off
-      if (boundaries_.wall_penetration(a, r[a], radius_of(i), kDistanceTolerance * boundaries_.length(a), time()) > 0.0) {
-        fail("particle ", user_id(i), " is in a wall along axis ", a, " at ", r[a]);
-      }
-    }
-    for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {  // nor into an obstacle
-      const double contact = obstacle.radius + radius_of(i);
-      if (norm(r - obstacle.centre) < contact * (1.0 - kDistanceTolerance)) {
-        fail("particle ", user_id(i), " is inside obstacle ", obstacle.obstacle, ": distance ", norm(r - obstacle.centre) / contact, " of contact");
-      }
+    // A grain never passes into a surface beyond round-off.
+    if (const SurfaceOverlap o = surface_overlap(boundaries_, slot(i).cell(), r, radius_of(i), kDistanceTolerance, time()); o.surface >= 0) {
+      fail("particle ", user_id(i), " is inside ", surface_name(o.surface, o.obstacle), " by ", o.depth);
     }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(slot(i).cell());
@@ -104,33 +94,10 @@ void Simulation<D>::check_invariants() const {
       const double normal_speed = std::abs(dot(d, v)) / norm(d);
       cosine = dot(d, v) / (norm(d) * norm(v));
       slack = kDistanceTolerance * contact_distance(i, fresh.partner) / normal_speed;
-    } else if (is_surface_hit(kind) && hit_surface(kind) < kWalls && !boundaries_.moving(hit_surface(kind)) &&
-               params_.gravity[static_cast<std::size_t>(hit_surface(kind) / 2)] != 0.0) {
-      // A grain resting on a floor: its position is known to a few ulps ε of L, and a parabola
-      // that barely leaves the floor closes that gap in up to √(2ε/|g|) (seen: 2·10⁻¹³).
-      const int axis = hit_surface(kind) / 2;
-      const double gap = kRoundOffUlps * std::numeric_limits<double>::epsilon() * boundaries_.length(axis);
-      slack = std::sqrt(2.0 * gap / std::abs(params_.gravity[static_cast<std::size_t>(axis)]));
-    } else if (is_surface_hit(kind) && hit_surface(kind) < kWalls && boundaries_.moving(hit_surface(kind))) {
-      // A hit on a moving wall is found within the wall's gap tolerance (boundary/moving_wall_hit.hpp):
-      // two searches from different instants stop up to tolerance / closing speed apart.
-      const int face = hit_surface(kind);
-      const int axis = face / 2;
-      const double delay = fresh.delay();
-      const double speed_then = motion_.velocity_at(particles_[at(i)].v, t_now_ + delay)[axis];
-      const double closing = std::abs(moving_gap_rate(boundaries_.moving_plane(face, radius_of(i)), speed_then, time() + delay));
-      slack = 2.0 * boundaries_.gap_tolerance(axis) / closing;
     } else if (is_surface_hit(kind)) {
-      // Likewise within the obstacles' tolerance (boundary/obstacle_hit.hpp), at the closing speed then.
       const double then = t_now_ + fresh.delay();
-      const Vector at_hit = position_at(i, then);
-      const Vector v_hit = motion_.velocity_at(particles_[at(i)].v, then);
-      double closing = kInf;
-      for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {
-        const Vector d = at_hit - obstacle.centre;
-        if (std::abs(norm(d) - obstacle.radius - radius_of(i)) <= 2.0 * boundaries_.obstacle_lists().tolerance()) closing = std::abs(dot(d, v_hit)) / norm(d);
-      }
-      slack = 2.0 * boundaries_.obstacle_lists().tolerance() / closing;
+      slack = surface_hit_slack(boundaries_, hit_surface(kind), slot(i).cell(), position_at(i, then),
+                                motion_.velocity_at(particles_[at(i)].v, then), radius_of(i), time() + fresh.delay(), params_.gravity);
     }
     const double due = t_now_ + fresh.delay() * (1.0 + kDelayTolerance) + slack;
     const bool held = stored <= due || (kind == EventKind::kCollision && queue_.time_of(fresh.partner) <= due);
@@ -157,31 +124,12 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     return;
   }
   if (kind == EventKind::kNone) return;
-  if (is_surface_hit(kind) && hit_surface(kind) < kWalls) {  // the grain must touch the wall (or, moving walls, not have passed it)
-    const int face = hit_surface(kind);
-    const int axis = face / 2;
-    const double shift = boundaries_.displacement(face, time());
-    const double wall = face % 2 == 0 ? shift : boundaries_.length(axis) - shift;
-    const double gap = std::abs(r[axis] - wall) - radius_of(i);
-    const bool rechecked = boundaries_.moving(face) && gap > 0.0;  // a search that stopped short (moving_wall_hit.hpp)
-    if (!rechecked && std::abs(gap) > kDistanceTolerance * boundaries_.length(axis)) {
-      fail("wall hit of particle ", user_id(i), " popped ", std::abs(r[axis] - wall) / radius_of(i), " radii from the wall");
-    }
-    return;
-  }
-  if (is_surface_hit(kind)) {  // an obstacle: the grain must touch one its cell lists
-    double nearest = kInf;
-    double contact = 0.0;
-    for (const auto& obstacle : boundaries_.obstacle_lists().in_cell(slot(i).cell())) {
-      const double gap = norm(r - obstacle.centre) - obstacle.radius - radius_of(i);
-      if (std::abs(gap) < std::abs(nearest)) {
-        nearest = gap;
-        contact = obstacle.radius + radius_of(i);
-      }
-    }
-    const bool rechecked = nearest > 0.0 && nearest < kInf && params_.has_gravity();  // a search that gave up (obstacle_hit.hpp)
-    if (!rechecked && !(std::abs(nearest) <= boundaries_.obstacle_lists().tolerance() + kDistanceTolerance * contact)) {
-      fail("obstacle hit of particle ", user_id(i), " popped ", nearest, " from the nearest obstacle's contact");
+  if (is_surface_hit(kind)) {  // the grain must touch the surface (or be short of it where a search may stop short)
+    const SurfaceHitGap g = surface_hit_gap(boundaries_, hit_surface(kind), slot(i).cell(), r, radius_of(i), kDistanceTolerance,
+                                            time(), params_.has_gravity());
+    if (!g.may_fall_short && !(std::abs(g.gap) <= g.allowed)) {
+      fail("hit of ", surface_name(hit_surface(kind), g.obstacle), " by particle ", user_id(i), " popped at a gap of ", g.gap,
+           " (allowed: ", g.allowed, ")");
     }
     return;
   }
