@@ -55,7 +55,7 @@ every_collisions_per_particle = 0.5
 seeds = {3}
 )",
                                                 by_scale(scale, 1000, 4000, 20000, kThesisParticles), system.restitution, until_c,
-                                                by_scale(scale, 1, 2, 2, 1))});
+                                                by_scale(scale, 1, 3, 3, 1))});
   }
   return groups;
 }
