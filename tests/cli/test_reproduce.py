@@ -93,7 +93,7 @@ def tiny_study_claims(study):
 CHAPTER_CLAIMS = {
     "chapter4": ["chapter4.cold_start.quasihomogeneous", "chapter4.cold_start.temperature_T0", "chapter4.hot_start.plugged",
                  "chapter4.ramp.plug", "chapter4.ramp.two_layers", "chapter4.ramp.plug_central", "chapter4.ramp.plug_colder",
-                 "chapter4.ramp.heat_flux_to_plug", "chapter4.step.plug", "chapter4.step.plug_central",
+                 "chapter4.ramp.heat_flux_to_plug", "chapter4.ramp.plug_persists", "chapter4.step.plug", "chapter4.step.plug_central",
                  "chapter4.kick.no_recovery", "chapter4.kick_small.no_recovery"],
     "chapter5": [f"chapter5.e={e}.{name}" for e in ("0.6", "0.9")
                  for name in ("linear_term", "ratio_fig5_9", "quadratic_anisotropy", "stress_once", "stress_twice")]
