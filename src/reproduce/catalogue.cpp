@@ -1,7 +1,7 @@
 // The studies `granule reproduce` knows, in the report's order, and the helpers they share.
-#include <cmath>
-#include <limits>
+#include <fmt/format.h>
 
+#include "io/io_error.hpp"
 #include "reproduce/study.hpp"
 
 namespace granule::reproduce {
@@ -45,7 +45,12 @@ double summary_number(const PointOutputs& point, const char* key) {
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
-  return node != nullptr && node->is_number() ? node->get<double>() : std::numeric_limits<double>::quiet_NaN();
+  if (node == nullptr || !node->is_number()) {
+    throw InputError(fmt::format("{}/summary.json: \"{}\" is missing or not a number, which the study reads; delete {} to run "
+                                 "the point again",
+                                 point.directory, key, point.directory));
+  }
+  return node->get<double>();
 }
 
 Claim estimate_claim(std::string id, std::string statement, std::string location, double expected, const Estimate& measured,

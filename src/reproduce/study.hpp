@@ -94,7 +94,8 @@ const std::vector<Study>& all_studies();
 // The study named `what`, or every study for "all"; empty when no study has that name.
 std::vector<const Study*> studies_named(const std::string& what);
 
-// The run's number `key` of summary.json (NaN when absent).
+// The run's number `key` of summary.json ("a.b", "box.0"); InputError, naming the file and the key,
+// when it is absent or not a number.
 double summary_number(const PointOutputs& point, const char* key);
 
 // A claim about a number estimated over seeds (its mean and standard error).

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "io/atomic_file.hpp"
+#include "io/io_error.hpp"
 #include "render/plot_scripts.hpp"
 
 namespace granule::reproduce {
@@ -72,9 +73,14 @@ StudiesEvaluated evaluate_studies(const std::vector<const Study*>& studies, cons
     fmt::print("reproduce: analysing {}\n", study->name);
     try {
       section.outcome = study->evaluate(scale, outputs);
+    } catch (const InputError&) {
+      throw;  // a damaged file the user must remove: no report is written from it
     } catch (const std::exception& error) {
-      // Missing or unreadable outputs (failed runs): the study is reported as not evaluated.
+      // Outputs the runs did not produce (failed runs): the study is reported as not evaluated, and
+      // the report as incomplete.
       section.outcome.notes.push_back(fmt::format("the study could not be evaluated: {}", error.what()));
+      fmt::print(stderr, "reproduce: {} could not be evaluated: {}\n", study->name, error.what());
+      evaluated.complete = false;
     }
     draw_figures(out, section.outcome);
     evaluated.sections.push_back(std::move(section));

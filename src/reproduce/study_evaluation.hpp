@@ -18,7 +18,7 @@ namespace granule::reproduce {
 struct StudiesEvaluated {
   std::vector<StudySection> sections;  // in the order of `studies`
   double run_seconds = 0.0;            // the runs' own wall times, summed (their last attempts)
-  bool complete = true;                // every point of every group finished
+  bool complete = true;                // every point of every group finished, every study evaluated
 };
 
 StudiesEvaluated evaluate_studies(const std::vector<const Study*>& studies, const std::vector<GroupRun>& groups, Scale scale,

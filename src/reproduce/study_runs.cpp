@@ -3,15 +3,17 @@
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
+#include "io/io_error.hpp"
+#include "io/json_file.hpp"
 #include "io/timeseries_csv.hpp"
 #include "sweep/point_record.hpp"
 #include "sweep/point_runs.hpp"
+#include "sweep/point_summary.hpp"
 #include "sweep/results_table.hpp"
 
 namespace granule::reproduce {
@@ -102,9 +104,13 @@ GroupReading read_group(const GroupRun& g) {
     for (const sweep::PointSetting& s : point.settings) p.settings.emplace_back(s.key, s.readable);
     const fs::path run = g.dir.run(point);
     if (fs::exists(run / "timeseries.csv")) p.samples = read_timeseries((run / "timeseries.csv").string());
-    std::ifstream summary(run / "summary.json");
-    if (summary) p.summary = nlohmann::json::parse(summary, nullptr, false);
-    if (p.summary.is_discarded()) p.summary = nullptr;
+    // Read as untrusted input: a damaged summary is refused by name (sweep::read_point_summary), and
+    // a run that finished must have one, since its claims read it.
+    if (const std::optional<JsonFile> summary = sweep::read_point_summary(g.dir, point)) p.summary = summary->json();
+    if (p.usable() && p.summary.is_null()) {
+      throw InputError(fmt::format("{}: the run {} but has no summary.json; delete {} to run the point again",
+                                   p.directory, p.status, p.directory));
+    }
     outputs.push_back(std::move(p));
   }
   return reading;

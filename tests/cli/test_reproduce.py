@@ -2,7 +2,7 @@
 picture inline, no external resource), claims.csv and claims.json that agree with each other; every
 verdict, in claims.json and in every row of claims.csv, follows from its numbers by the documented
 rule (recomputed here independently), with a reason exactly when it is not resolvable; a second
-call skips the finished runs; an unknown study is refused with a clear
+call skips the finished runs; a damaged or incomplete summary.json is refused by name; an unknown study is refused with a clear
 message and nothing written."""
 import csv
 import json
@@ -51,6 +51,23 @@ check(all(c["id"].split(".")[0] in markdown or c["statement"][:20] in markdown f
 again = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
 check(again.returncode == 0, f"second call exited {again.returncode}")
 check(again.stdout.count("skipped") >= 5 and "finished in" not in again.stdout, "second call ran points again")
+
+# A finished run's summary.json is read as untrusted input: one cut short, and one without a number a
+# claim reads, are refused by file and key (exit 2) rather than judged as NaN.
+summaries = sorted(out.glob("runs/validation/*/runs/*/summary.json"))
+check(len(summaries) >= 5, f"{len(summaries)} summaries of the tiny runs")
+kept = summaries[0].read_text()
+summaries[0].write_text(kept[: len(kept) // 2])
+cut = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
+check(cut.returncode == 2 and str(summaries[0]) in cut.stderr and "delete" in cut.stderr,
+      f"a summary.json cut short is refused by name: {cut.returncode} {cut.stderr[-400:]}")
+without = json.loads(kept)
+del without["diameter"]
+summaries[0].write_text(json.dumps(without))
+missing = granule("reproduce", "validation", "--scale", "tiny", "--out", out)
+check(missing.returncode == 2 and '"diameter" is missing' in missing.stderr and str(summaries[0].parent) in missing.stderr,
+      f"a summary.json without a number a claim reads is refused by key: {missing.returncode} {missing.stderr[-400:]}")
+summaries[0].write_text(kept)
 
 # Over MPI ranks (three: rank 0 hands out, two run): the same runs, hence the same numbers.
 mpi_out = WORK / "report_mpi"
