@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
@@ -55,7 +57,18 @@ void require_memory(double needed_bytes, const std::string& what) {
 }
 
 void check_run_memory(const RunConfig& config, const CellGrid& grid) {
-  require_memory(estimated_run_bytes(config, grid), fmt::format("a run of N = {}", config.system.particles));
+  std::string what = fmt::format("a run of N = {}", config.system.particles);
+  // A measurement grid of more cells than particles is named: it is what to change.
+  const auto larger = [&](const std::pair<int, int>& cells) {
+    return static_cast<double>(cells.first) * cells.second > static_cast<double>(config.system.particles);
+  };
+  if (config.system.dimension == 2 && config.fields.enabled && larger(config.fields.cells)) {
+    what += fmt::format(" with fields.cells = [{}, {}]", config.fields.cells.first, config.fields.cells.second);
+  }
+  if (larger(config.diagnostic_cells)) {
+    what += fmt::format(" with diagnostics.cells = [{}, {}]", config.diagnostic_cells.first, config.diagnostic_cells.second);
+  }
+  require_memory(estimated_run_bytes(config, grid), what);
 }
 
 template <int D>

@@ -12,6 +12,7 @@
 #include "io/hdf5_util.hpp"
 #include "io/io_error.hpp"
 #include "io/timeseries_csv.hpp"
+#include "observables/observables.hpp"
 
 namespace granule::driver {
 
@@ -157,8 +158,10 @@ double estimated_run_bytes(const RunConfig& config, const CellGrid& grid) {
   // ~95 B per disk and ~111 per sphere, +8 with the TC model, +16 polydisperse, +8 (+24) for
   // spinning disks (spheres); beside it, at most the positions and cell binning of the flow
   // classification (32 B per disk) or a block-read output; a 2D run of 10^7 disks with every
-  // default output peaked at 151 B per disk.  Per cell of a measurement grid ~40 doubles; per
-  // engine cell its list head.
+  // default output peaked at 151 B per disk.  Per engine cell its list head.  Per cell of the
+  // fields' grid (its moments, sums and averages) 673 B in 2D (fields.cells = [2000, 2000] of 1000
+  // disks peaked at 2.73 GB, [1000, 1000] at 0.70 GB), 3D scaled by its 55 fields to 2D's 37, and
+  // 13 B when fields are off; per cell of the diagnostics' grid 154 B ([2000, 2000]: 0.65 GB).
   const SystemParams& s = config.system;
   const bool spheres = s.dimension == 3;
   double per_particle = spheres ? 111.0 : 95.0;
@@ -167,9 +170,11 @@ double estimated_run_bytes(const RunConfig& config, const CellGrid& grid) {
   if (s.roughness.rough) per_particle += spheres ? 24.0 : 8.0;
   per_particle += 48.0;  // the transients above, with a margin
   const auto n = static_cast<double>(s.particles);
-  const double field_cells = static_cast<double>(config.fields.cells.first) * config.fields.cells.second +
-                             static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
-  return per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + 40.0 * 8.0 * field_cells;
+  const double field_cells = static_cast<double>(fields_grid(config).cells());
+  const double per_field_cell = !config.fields.enabled ? 16.0 : spheres ? 1000.0 : 680.0;
+  const double diagnostic_cells = static_cast<double>(config.diagnostic_cells.first) * config.diagnostic_cells.second;
+  return per_particle * n + 4.0 * static_cast<double>(grid.cell_count()) + per_field_cell * field_cells +
+         160.0 * diagnostic_cells;
 }
 
 }  // namespace granule::driver

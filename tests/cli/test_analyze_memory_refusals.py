@@ -2,10 +2,12 @@
 allocate it — `analyze spectra --max-mode 256` of a small 3D run (an FFT grid of 1080³ complex values
 and 513³ modes, ~33 GiB), `analyze fields --cells 16384,16384` of a 2D run (~80 GiB of cell moments
 and fields) `analyze collisions --set fields.cells=[16384,16384]` and `analyze f1` of 250 frames binned on
-4096 × 4096 speeds and angles (~34 GiB) exit 5 at once with a message
+4096 × 4096 speeds and angles (~34 GiB), and `run` with a fields grid whose 673 B per cell exceed the
+memory, exit 5 at once with a message
 that names the option and write nothing; the same commands with small grids still run.  The refusals
 are checked only where the machine has less memory than they need (MemAvailable or the cgroup limit,
 as Granule reads it)."""
+import math
 import time
 
 from harness import WORK, check, finish, granule
@@ -75,6 +77,13 @@ if 0 < available < 75 * GiB:
     out = WORK / "replay_16384"
     refused("analyze collisions --set fields.cells=[16384,16384]",
             ["analyze", "collisions", disks, "--set", "fields.cells=[16384,16384]", "--out", out], "fields.cells = [16384, 16384]", out)
+    # A run whose fields grid alone needs more than the machine has (673 B per 2D cell, measured),
+    # though half as much per cell would fit: refused before it writes, naming the grid.
+    side = math.ceil(math.sqrt(available / 500))
+    out = WORK / "run_fields"
+    refused(f"run --set fields.cells=[{side},{side}]",
+            ["run", "--out", out, "--set", "system.particles=400", "--set", f"fields.cells=[{side}, {side}]"],
+            f"fields.cells = [{side}, {side}]", out)
 else:
     print(f"skipped the field grid refusals: {available / GiB:.0f} GiB available")
 if 0 < available < 30 * GiB:
