@@ -136,7 +136,8 @@ for study, ids in CHAPTER_CLAIMS.items():
 # numbers, every figure with its thesis figure number and a drawn picture.
 APPENDIX_CLAIMS = {
     "appendix-b": [f"appendix_b.e={e}.{k}" for e in ("0.6", "0.7", "0.8", "0.9")
-                   for k in ("b1_magnitude", "b2_magnitude", "b1_density_trend")],
+                   for k in ("b1_magnitude", "b2_magnitude", "b1_density_trend", "b1_magnitude.profile_removed",
+                             "b1_density_trend.profile_removed")],
     "appendix-c": ["appendix_c.fig_c1.early_decay", "appendix_c.fig_c1.onset_as_2d", "appendix_c.fig_c2.clusters_in_flow_plane",
                    "appendix_c.fig_c3.plug_is_streamwise", "appendix_c.fig_c3.plug_in_centre",
                    "appendix_c.fig_c4.neighbours_spin_opposite", "appendix_c.fig_c5.plug_is_streamwise",
