@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "distribution/appendix_b_reference.hpp"
 #include "reproduce/sheared_gas.hpp"
@@ -32,6 +35,9 @@ constexpr double kDensityHalfWidth = 0.1;
 // samples in the small runs.
 constexpr double kTemperatureHalfWidth = 0.1;
 constexpr const char* kWindowsTable = "f1_windows.csv";
+// The thesis's literal v′ = v − V(cell), which keeps the shear across a cell, analysed beside the
+// profile-removed v′ of the claims: a hypothesis for the disagreements of b₀⁽¹⁾ and Fig 5.9.
+constexpr const char* kLiteralStem = "f1_literal";
 
 std::string group_name(const char* restitution) { return fmt::format("restitution_{}", restitution); }
 
@@ -86,8 +92,14 @@ std::vector<PointAnalysis> chapter5_analyses(Scale scale) {
     }
     arguments.push_back("--temperature-window");
     arguments.push_back(fmt::format("{:.6g}+-{:.6g}", temperature, kTemperatureHalfWidth * temperature));
-    for (const char* a : {"--min-samples", scale == Scale::tiny ? "300" : "10000", "--out", "{run}/f1.h5"}) arguments.push_back(a);
+    for (const char* a : {"--min-samples", scale == Scale::tiny ? "300" : "10000"}) arguments.push_back(a);
+    std::vector<std::string> literal = arguments;
+    std::erase(literal, std::string("--subtract-shear-profile"));
+    for (const char* a : {"--out", "{run}/f1.h5"}) arguments.push_back(a);
     analyses.push_back({group_name(restitution), arguments, kWindowsTable});
+    literal.push_back("--out");
+    literal.push_back(fmt::format("{{run}}/{}.h5", kLiteralStem));
+    analyses.push_back({group_name(restitution), literal, fmt::format("{}_windows.csv", kLiteralStem)});
   }
   return analyses;
 }
@@ -123,10 +135,11 @@ struct WindowMeasures {
   int samples = 0;
 };
 
-WindowMeasures measure_window(const PointOutputs& p, double density) {
+// `stem`: the analysis's output name, "f1" (profile-removed v′) or kLiteralStem.
+WindowMeasures measure_window(const PointOutputs& p, double density, const std::string& stem = "f1") {
   WindowMeasures m;
   std::string window;
-  for (const auto& row : read_csv_rows(p.directory + "/" + kWindowsTable)) {
+  for (const auto& row : read_csv_rows(p.directory + "/" + stem + "_windows.csv")) {
     if (std::abs(number(row, "rho_center") - density) > 1e-6 * density) continue;
     window = row.at("window");
     m.samples = static_cast<int>(number(row, "samples"));
@@ -137,7 +150,7 @@ WindowMeasures measure_window(const PointOutputs& p, double density) {
   }
   if (window.empty()) return m;
   double mean = NAN, amplitude = NAN;
-  for (const auto& row : read_csv_rows(p.directory + "/f1_table.csv")) {
+  for (const auto& row : read_csv_rows(p.directory + "/" + stem + "_table.csv")) {
     if (std::abs(number(row, "rho_center") - density) > 1e-6 * density) continue;
     if (row.at("j") == "0") mean = number(row, "b2_2j");
     if (row.at("j") == "1") amplitude = number(row, "b2_2j");
@@ -288,6 +301,26 @@ StudyOutcome evaluate_chapter5(Scale scale, const StudyOutputs& outputs) {
     m.once = mean_over(once);
     m.twice = mean_over(twice);
     add_restitution_claims(restitution, scale, m, out);
+    // The hypothesis: b₀⁽¹⁾'s size and Fig 5.9's ratio with the thesis's literal v′.
+    std::vector<double> literal_b1, literal_ratio;
+    for (const PointOutputs* p : points_with(outputs.at(group_name(restitution)))) {
+      const WindowMeasures w = measure_window(*p, particles(scale), kLiteralStem);
+      if (w.samples == 0) continue;
+      literal_b1.push_back(w.b1);
+      literal_ratio.push_back(w.ratio);
+    }
+    const std::size_t first = out.claims.size() - 5;  // linear_term, ratio_fig5_9, … of add_restitution_claims
+    for (const auto& [k, values] : {std::pair{first, &literal_b1}, std::pair{first + 1, &literal_ratio}}) {
+      Claim c = out.claims[k];
+      c.id += ".literal_v";
+      c.statement += " (hypothesis: the thesis's literal v′ = v − V(cell), with the shear across the cell)";
+      const Estimate e = mean_over(*values);
+      c.measured = e.mean;
+      c.error = e.error;
+      c.checked += "; the same analysis without --subtract-shear-profile";
+      c.unresolvable = values->empty() ? "no window with enough samples (granule analyze f1 skipped it or did not run)" : "";
+      out.claims.push_back(c);
+    }
   }
   // The fall of the ratio from ẽ = 0.6 to 0.9 (Fig 5.9: "largest when ẽ is small ... tends to zero as ẽ → 1").
   const Estimate low = by_restitution["0.6"].ratio, high = by_restitution["0.9"].ratio;

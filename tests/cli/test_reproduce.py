@@ -113,7 +113,8 @@ CHAPTER_CLAIMS = {
                  "chapter4.ramp.heat_flux_to_plug", "chapter4.ramp.plug_persists", "chapter4.step.plug", "chapter4.step.plug_central",
                  "chapter4.kick.no_recovery", "chapter4.kick_small.no_recovery"],
     "chapter5": [f"chapter5.e={e}.{name}" for e in ("0.6", "0.9")
-                 for name in ("linear_term", "ratio_fig5_9", "quadratic_anisotropy", "stress_once", "stress_twice")]
+                 for name in ("linear_term", "ratio_fig5_9", "quadratic_anisotropy", "stress_once", "stress_twice",
+                              "linear_term.literal_v", "ratio_fig5_9.literal_v")]
                 + ["chapter5.ratio_falls_with_e"],
 }
 CHAPTER_FIGURES = {"chapter4": ["Figs 4.5–4.8", "Figs 4.7–4.8"], "chapter5": ["Fig 5.9", "Fig 5.10", "Fig 5.11"]}
