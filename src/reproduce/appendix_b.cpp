@@ -233,23 +233,17 @@ StudyOutcome evaluate_appendix_b(Scale scale, const StudyOutputs& outputs) {
         "d b₀⁽¹⁾/d(ρ/10⁵) in thesis units (b₀⁽¹⁾ × u, ρ × a²), one intercept per T window, the table's slope on the same "
         "windows, " + runs,
         ToleranceKind::sign);
+    const auto reason = [&](const RestitutionMeasures& r, bool is_trend) -> std::string {
+      if (r.windows == 0) return unanalysed;
+      return is_trend && !std::isfinite(r.thesis_trend) ? "no T window holds two ρ windows" : "";
+    };
     // The hypothesis: the same two claims on b₀⁽¹⁾ with v′ relative to the shear profile.
-    const std::string hypothesis = " (hypothesis: v′ relative to the linear shear profile instead of the thesis's cell mean)";
-    Claim b1_profile = b1, trend_profile = trend;
-    b1_profile.id += ".profile_removed";
-    b1_profile.statement += hypothesis;
-    b1_profile.measured = profile.b1_ratio.mean;
-    b1_profile.error = profile.b1_ratio.error;
-    trend_profile.id += ".profile_removed";
-    trend_profile.statement += hypothesis;
-    trend_profile.measured = profile.trend.mean;
-    trend_profile.error = profile.trend.error;
-    for (Claim* c : {&b1_profile, &trend_profile}) c->checked += "; granule analyze f1 --subtract-shear-profile";
-    for (Claim* c : {&b1, &b2, &trend, &b1_profile, &trend_profile}) {
-      if ((c == &b1_profile || c == &trend_profile ? profile : m).windows == 0) c->unresolvable = unanalysed;
-    }
-    if (m.windows > 0 && !std::isfinite(m.thesis_trend)) trend.unresolvable = "no T window holds two ρ windows";
-    if (profile.windows > 0 && !std::isfinite(profile.thesis_trend)) trend_profile.unresolvable = "no T window holds two ρ windows";
+    const std::string hypothesis = "v′ relative to the linear shear profile instead of the thesis's cell mean";
+    const std::string how = "granule analyze f1 --subtract-shear-profile";
+    const Claim b1_profile = hypothesis_claim(b1, "profile_removed", hypothesis, profile.b1_ratio, how, reason(profile, false));
+    const Claim trend_profile = hypothesis_claim(trend, "profile_removed", hypothesis, profile.trend, how, reason(profile, true));
+    b1.unresolvable = b2.unresolvable = reason(m, false);
+    trend.unresolvable = reason(m, true);
     out.claims.push_back(b1);
     out.claims.push_back(b2);
     out.claims.push_back(trend);

@@ -53,6 +53,18 @@ double summary_number(const PointOutputs& point, const char* key) {
   return node->get<double>();
 }
 
+Claim hypothesis_claim(const Claim& base, const std::string& suffix, const std::string& hypothesis, const Estimate& measured,
+                       const std::string& how, std::string unresolvable) {
+  Claim c = base;
+  c.id += "." + suffix;
+  c.statement += " (hypothesis: " + hypothesis + ")";
+  c.measured = measured.mean;
+  c.error = measured.error;
+  c.checked += "; " + how;
+  c.unresolvable = std::move(unresolvable);
+  return c;
+}
+
 Claim estimate_claim(std::string id, std::string statement, std::string location, double expected, const Estimate& measured,
                      double tolerance, std::string tolerance_reason, std::string checked, ToleranceKind kind) {
   Claim c;

@@ -9,12 +9,13 @@
 //   "small but finite" 0.1 U₀ (the thesis gives no number).
 // The states are told apart by the mass in the densest band of L_y/5 (uniform gas: 0.2), from the
 // time series (analysis/flow_classification.hpp), and by the streamwise profiles of fields.h5.
+// The histories and their runs: reproduce/chapter4_histories.hpp.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "reproduce/sheared_gas.hpp"
+#include "reproduce/chapter4_histories.hpp"
 #include "reproduce/streamwise_profiles.hpp"
 #include "reproduce/study.hpp"
 #include "theory/steady_shear.hpp"
@@ -23,8 +24,12 @@ namespace granule::reproduce {
 
 namespace {
 
-constexpr double kRestitution = 0.6;  // Fig 4.5's system, as every history of §4.2–4.3
-constexpr int kThesisParticles = 20000;
+using chapter4::History;
+using chapter4::kRampReached;
+using chapter4::kRestitution;
+using chapter4::kThesisParticles;
+using chapter4::histories;
+
 constexpr double kBandFraction = 0.2;  // the densest band is L_y/5 wide (FlowClassificationSettings)
 
 // The criteria of the states, fixed before the runs.  A uniform gas puts 0.2 of its mass into the
@@ -38,80 +43,6 @@ constexpr double kPluggedBand = 0.75, kPluggedBandTolerance = 0.25;  // [0.5, 1]
 // run of rows denser than twice the mean (the ramp's layers reach 4–8 ρ̄, docs/chapter4.md); the
 // frames of fields.h5 within ±2.5 c of c = 20 are averaged.
 constexpr double kEarlyLayersC = 20.0, kEarlyLayersHalfWidth = 2.5, kLayerDensity = 2.0;
-
-// The ramp U = U₀(1 − e^{−t/τ}) (Figs 4.7–4.8) has reached its final value, within 1 %, at
-// t = τ ln 100.  Fig 4.8 shows the plug "after long times" and the text says it "persists": it is
-// judged after that time, in a run twice as long; while U still rises it is reported in a note.
-constexpr double kRampTime = 0.5;
-const double kRampReached = kRampTime * std::log(100.0);
-
-// One history: its run group and how it differs from the cold start.
-struct History {
-  const char* group;
-  std::string name;
-  // [boundary] and [initial] lines of the history (the shear velocity or its protocol included).
-  std::string boundary, initial;
-  double protocol_end_t = 0.0;  // the protocol's forcing has ended by this time (kick, step, ramp)
-  double length = 1.0;          // the run's c_end in units of the others'
-  double until_t = 0.0;         // > 0: the run ends at this time instead (the ramp)
-};
-
-// The protocol's start (t, in 1/γ = 0.01 units) lies after the cold start has settled (T reaches
-// T₀ within ~20 c, c/t ≈ 75 here at any N since ν and γ are fixed) and leaves most of the run after it.
-std::vector<History> histories(Scale scale) {
-  const double start = by_scale(scale, 0.15, 1.0, 1.0, 1.0);
-  // "long relative to the average time between collisions" (§4.3): 22 collision times, as the kick
-  // of docs/chapter4.md (N = 20000) that left a layered state; one of 0.1 (7.5 collision times) let
-  // the small runs recover (densest band 0.32, Dec 2026).  The plug it makes collides fast, so the
-  // run is longer, to leave a window after the kick.
-  const double period = by_scale(scale, 0.05, 0.3, 0.3, 0.3);
-  const int cycles = 3;
-  const std::string cold = "temperature_over_steady = 0.1\nequilibrate = 0   # an elastic pre-run under shear would heat the gas";
-  return {
-      {"cold", "cold start", "shear_velocity = 100.0", cold, 0.0, 1.0},
-      {"hot", "hot start", "shear_velocity = 100.0", "temperature_over_steady = 1e5   # T_i ≫ √N T₀ (§4.2)\nequilibrate = 5",
-       0.0, 1.0},
-      {"ramp", "ramp from rest",
-       fmt::format("shear_velocity = 100.0\nshear_ramp_time = {}   # U = U₀ (1 − e^{{−t/τ}}), τ ≫ a collision time", kRampTime),
-       "shear_profile = false   # a static gas\ntemperature_over_steady = 1\nequilibrate = 5", kRampReached, 1.0,
-       2.0 * kRampReached},
-      {"kick", fmt::format("kick of a quasihomogeneous flow (U₀ + 100 sin, {} periods of {} from t = {})", cycles, period, start),
-       fmt::format("shear_velocity = 100.0\nshear_oscillation = {{ amplitude = 100.0, period = {}, start = {}, cycles = {} }}", period,
-                   start, cycles),
-       cold, start + cycles * period, 5.0 / 3.0},
-      // The thesis's "small but finite" perturbation has no amplitude in the text: a tenth of U₀.
-      {"kick_small", fmt::format("small kick of a quasihomogeneous flow (U₀ + 10 sin, {} periods of {} from t = {})", cycles, period, start),
-       fmt::format("shear_velocity = 100.0\nshear_oscillation = {{ amplitude = 10.0, period = {}, start = {}, cycles = {} }}", period,
-                   start, cycles),
-       cold, start + cycles * period, 5.0 / 3.0},
-      // U₀ = 200 is the protocol's last U, so 0.025 T₀(200) = 0.1 T₀(100): the cold start of the others.
-      {"step", "step 100 → 200",
-       fmt::format("shear_schedule = [[0.0, 100.0], [{0}, 100.0], [{0}, 200.0]]   # two points at one time: a step", start),
-       "temperature_over_steady = 0.025\nequilibrate = 0", start, 1.0},
-  };
-}
-
-std::vector<RunGroup> chapter4_runs(Scale scale) {
-  std::vector<RunGroup> groups;
-  const double until_c = by_scale(scale, 40.0, 300.0, 400.0, 400.0);
-  for (const History& h : histories(scale)) {
-    // A run to a time (the ramp) samples in time: its plug collides tens of times faster than the
-    // gas, so c per unit t is not known before; the fields' step keeps frames at Fig 4.7's c = 20.
-    const std::string ends_and_cadence =
-        h.until_t > 0.0
-            ? fmt::format("[run]\nuntil_time = {0}\n[output]\nevery_time = {1}\nsnapshot_every_time = {2}\n"
-                          "[fields]\nevery_time = {3}\n",
-                          h.until_t, h.until_t / 2000.0, h.until_t / 8.0, h.until_t / 600.0)
-            : fmt::format("[run]\nuntil_collisions_per_particle = {0}\n[output]\nevery_collisions_per_particle = 1\n"
-                          "snapshot_every_collisions_per_particle = {1}\n[fields]\nevery_collisions_per_particle = {2}\n",
-                          h.length * until_c, until_c / 4.0, until_c / 60.0);
-    groups.push_back({h.group, sheared_gas_tables(45, by_scale(scale, 500, 4000, 10000, kThesisParticles), kRestitution,
-                                                  h.boundary) +
-                                   fmt::format("[initial]\n{}\n{}[sweep]\nseeds = {}\n", h.initial, ends_and_cadence,
-                                               by_scale(scale, 1, 3, 3, 3))});
-  }
-  return groups;
-}
 
 // The window of a run in which its state is read: the second half of the run, and after the
 // protocol's forcing ended.
@@ -128,6 +59,11 @@ LateWindow late_window(const PointOutputs& p, double protocol_end_t) {
     }
   }
   return w;
+}
+
+// The mass fraction in the densest band over c ∈ [c_from, c_to] of a run's time series.
+double band_mean(const PointOutputs& p, double c_from, double c_to) {
+  return window_mean(p.samples, c_from, c_to, [](const DiagnosticsSample& s) { return s.flow.densest_band_mass_fraction; });
 }
 
 // The second half of the forcing, t ∈ [protocol_end_t / 2, protocol_end_t], in c.
@@ -159,8 +95,7 @@ HistoryMeasures measure(const History& h, const GroupOutputs& group) {
     if (m.band.empty()) m.window = w;
     m.particles = static_cast<int>(summary_number(*p, "particles"));
     m.diameter = summary_number(*p, "diameter");
-    m.band.push_back(
-        window_mean(p->samples, w.c_from, w.c_to, [](const DiagnosticsSample& s) { return s.flow.densest_band_mass_fraction; }));
+    m.band.push_back(band_mean(*p, w.c_from, w.c_to));
     m.temperature.push_back(window_mean(p->samples, w.c_from, w.c_to, [](const DiagnosticsSample& s) { return s.temperature; }));
     const StreamwiseProfiles profiles = read_streamwise_profiles(p->directory + "/fields.h5", w.c_from, w.c_to);
     const int band_rows = std::max(1, static_cast<int>(std::lround(kBandFraction * static_cast<double>(profiles.y.size()))));
@@ -174,9 +109,7 @@ HistoryMeasures measure(const History& h, const GroupOutputs& group) {
     if (h.until_t > 0.0) {
       const LateWindow f = forcing_window(*p, h.protocol_end_t);
       if (m.band_forcing.empty()) m.rising_window = f;
-      const auto band_over = [&](double from, double to) {
-        return window_mean(p->samples, from, to, [](const DiagnosticsSample& s) { return s.flow.densest_band_mass_fraction; });
-      };
+      const auto band_over = [&](double from, double to) { return band_mean(*p, from, to); };
       m.band_forcing.push_back(band_over(f.c_from, f.c_to));
       const double tenth = 0.1 * (w.c_to - w.c_from);
       m.excess_kept.push_back((band_over(w.c_to - tenth, w.c_to) - kUniformBand) /
@@ -400,7 +333,7 @@ Study chapter4_study() {
   return {"chapter4",
           "Shear histories",
           "Chapter 4 (§4.2–4.3: cold and hot starts, ramp from rest, step, kick; Figs 4.5–4.8)",
-          chapter4_runs,
+          chapter4::chapter4_runs,
           evaluate_chapter4,
           {}};
 }

@@ -311,15 +311,10 @@ StudyOutcome evaluate_chapter5(Scale scale, const StudyOutputs& outputs) {
     }
     const std::size_t first = out.claims.size() - 5;  // linear_term, ratio_fig5_9, … of add_restitution_claims
     for (const auto& [k, values] : {std::pair{first, &literal_b1}, std::pair{first + 1, &literal_ratio}}) {
-      Claim c = out.claims[k];
-      c.id += ".literal_v";
-      c.statement += " (hypothesis: the thesis's literal v′ = v − V(cell), with the shear across the cell)";
-      const Estimate e = mean_over(*values);
-      c.measured = e.mean;
-      c.error = e.error;
-      c.checked += "; the same analysis without --subtract-shear-profile";
-      c.unresolvable = values->empty() ? "no window with enough samples (granule analyze f1 skipped it or did not run)" : "";
-      out.claims.push_back(c);
+      out.claims.push_back(hypothesis_claim(
+          out.claims[k], "literal_v", "the thesis's literal v′ = v − V(cell), with the shear across the cell", mean_over(*values),
+          "the same analysis without --subtract-shear-profile",
+          values->empty() ? "no window with enough samples (granule analyze f1 skipped it or did not run)" : ""));
     }
   }
   // The fall of the ratio from ẽ = 0.6 to 0.9 (Fig 5.9: "largest when ẽ is small ... tends to zero as ẽ → 1").

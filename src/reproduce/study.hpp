@@ -103,6 +103,12 @@ Claim estimate_claim(std::string id, std::string statement, std::string location
                      double tolerance, std::string tolerance_reason, std::string checked,
                      ToleranceKind kind = ToleranceKind::relative);
 
+// A hypothesis for a disagreement, tested as the claim `base` measured another way: id
+// `base.id.suffix`, the hypothesis in parentheses after the statement, `how` after the check, the
+// other measurement, and its own reason when it cannot be judged (empty: it can).
+Claim hypothesis_claim(const Claim& base, const std::string& suffix, const std::string& hypothesis, const Estimate& measured,
+                       const std::string& how, std::string unresolvable);
+
 // One per file.
 Study validation_study();
 Study chapter2_study();
