@@ -19,6 +19,8 @@
 #include "boundary/obstacle_lists.hpp"
 #include "boundary/periodic_wrap.hpp"
 #include "boundary/shear_frame.hpp"
+#include "boundary/surface_id.hpp"
+#include "boundary/surface_set.hpp"
 #include "boundary/wall.hpp"
 #include "geometry/vec.hpp"
 
@@ -48,32 +50,29 @@ class BoxBoundaries {
   };
 
   BoxBoundaries() = default;
-  // Walls on the axes `walls` marks (faces 2·axis + side, side 0 at 0 and 1 at L), periodic or
-  // Lees–Edwards images elsewhere; `frame` holds L_x, L_y and the present image velocity.
-  BoxBoundaries(const std::array<bool, 3>& walls, const std::array<WallParams, 6>& wall, const ShearFrame& frame,
-                double length_z)
+  // Walls on the axes `surfaces.walls` marks (faces 2·axis + side, side 0 at 0 and 1 at L), periodic
+  // or Lees–Edwards images elsewhere, and the obstacles, listed by the engine's cells `cells`
+  // (ObstacleLists) for grains of radius at most `largest_grain_radius`; `frame` holds L_x, L_y and
+  // the present image velocity.
+  BoxBoundaries(const SurfaceSet& surfaces, const ShearFrame& frame, double length_z, const CellLayout& cells,
+                double largest_grain_radius)
       : frame_(frame), length_{frame.length_x, frame.length_y, length_z} {
-    for (int a = 0; a < D; ++a) {
-      kind_[static_cast<std::size_t>(a)] = walls[static_cast<std::size_t>(a)] ? AxisBoundary::kWalls
-                                           : a == 1                           ? AxisBoundary::kLeesEdwards
-                                                                              : AxisBoundary::kPeriodic;
-      walled_ = walled_ || !has_images(a);
-    }
-    set_walls(wall);
-  }
-
-  // The surfaces a grain can hit: the walls at faces 0 … 5 (2·axis + side), and the obstacles.
-  static constexpr int kObstacles = 6;
-
-  // The fixed obstacles and the engine's cells that list them (ObstacleLists), for grains of radius
-  // at most `largest_grain_radius`.
-  void set_obstacles(const std::vector<Obstacle>& obstacles, const CellLayout& cells, double largest_grain_radius) {
     std::array<bool, 3> images{};
-    for (int a = 0; a < D; ++a) images[static_cast<std::size_t>(a)] = has_images(a);
-    obstacle_lists_ = ObstacleLists<D>(obstacles, cells, images, length_, largest_grain_radius);
-    obstacles_ = obstacles;
+    for (int a = 0; a < D; ++a) {
+      kind_[static_cast<std::size_t>(a)] = surfaces.walls[static_cast<std::size_t>(a)] ? AxisBoundary::kWalls
+                                           : a == 1                                    ? AxisBoundary::kLeesEdwards
+                                                                                       : AxisBoundary::kPeriodic;
+      walled_ = walled_ || !has_images(a);
+      images[static_cast<std::size_t>(a)] = has_images(a);
+    }
+    obstacle_lists_ = ObstacleLists<D>(surfaces.obstacles, cells, images, length_, largest_grain_radius);
+    obstacles_ = surfaces.obstacles;
+    set_surfaces(surfaces);
   }
+
   const ObstacleLists<D>& obstacle_lists() const { return obstacle_lists_; }
+  // The memory its lists of surfaces by cell take.
+  std::size_t bytes() const { return obstacle_lists_.bytes(); }
 
   AxisBoundary kind(int axis) const { return kind_[static_cast<std::size_t>(axis)]; }
   // Whether the grid has neighbours beyond its faces along `axis` (no: walls).
@@ -91,16 +90,14 @@ class BoxBoundaries {
   double& image_velocity() { return frame_.shear_velocity; }
   double image_velocity() const { return frame_.shear_velocity; }
   const WallParams& wall(int face) const { return wall_[static_cast<std::size_t>(face)]; }
-  // New restitutions of the obstacles (those of production; the places stay).
-  void set_obstacle_restitutions(const std::vector<Obstacle>& obstacles) {
+  // New parameters of the same surfaces (those of production: restitutions, the walls' drives; the
+  // places stay).
+  void set_surfaces(const SurfaceSet& surfaces) {
     for (std::size_t k = 0; k < obstacles_.size(); ++k) {
-      obstacles_[k].restitution = obstacles[k].restitution;
-      obstacles_[k].tangential_restitution = obstacles[k].tangential_restitution;
+      obstacles_[k].restitution = surfaces.obstacles[k].restitution;
+      obstacles_[k].tangential_restitution = surfaces.obstacles[k].tangential_restitution;
     }
-  }
-  // New wall parameters (the restitutions of production), with their drives.
-  void set_walls(const std::array<WallParams, 6>& wall) {
-    wall_ = wall;
+    wall_ = surfaces.wall;
     for (std::size_t face = 0; face < 6; ++face) {
       const WallParams& w = wall_[face];
       along_[face] = ShearProtocol(w.velocity[static_cast<std::size_t>(w.along_axis)], w.along);
@@ -198,7 +195,7 @@ class BoxBoundaries {
                                        obstacle_lists_.tolerance());
       if (t < best) {
         best = t;
-        surface = kObstacles;
+        surface = kObstacleSurface;
       }
     }
   }
@@ -210,7 +207,7 @@ class BoxBoundaries {
     Vector velocity;        // the surface's (where the grain touches it)
     double restitution = 1.0;
     double tangential_restitution = -1.0;
-    std::int32_t obstacle = -1;  // which obstacle; −1: the wall at the face
+    SurfaceId surface;
   };
   // Whether the grain of radius `radius` in cell `cell`, at r moving at v at production time `now`,
   // touches `surface` while moving into it, by the test its search made (a grain that no longer
@@ -218,7 +215,8 @@ class BoxBoundaries {
   // obstacle again as the one nearest contact among those the cell lists.
   SurfaceContact contact(int surface, std::int32_t cell, const Vector& r, const Vector& v, double radius, double now) const {
     SurfaceContact c;
-    if (surface < kObstacles) {
+    if (surface < kObstacleSurface) {
+      c.surface = {surface, -1};
       const int axis = surface / 2;
       c.k_hat = wall_normal(surface);
       if (moving(surface)) {
@@ -247,7 +245,7 @@ class BoxBoundaries {
     const Obstacle& o = obstacles_[static_cast<std::size_t>(touched->obstacle)];
     c.restitution = o.restitution;
     c.tangential_restitution = o.tangential_restitution;
-    c.obstacle = touched->obstacle;
+    c.surface = {kObstacleSurface, touched->obstacle};
     return c;
   }
   // The contact plane of a moving wall for a grain of radius `radius` (boundary/moving_wall_hit.hpp).

@@ -16,15 +16,9 @@
 
 namespace granule {
 
-// A surface by name, for messages: "the wall at face 2", "obstacle 3".
-inline std::string surface_name(int surface, std::int32_t obstacle) {
-  return obstacle >= 0 ? "obstacle " + std::to_string(obstacle) : "the wall at face " + std::to_string(surface);
-}
-
 // A surface a grain reaches into.
 struct SurfaceOverlap {
-  int surface = -1;  // −1: none
-  std::int32_t obstacle = -1;
+  SurfaceId surface;  // none found: not found()
   double depth = 0.0;  // beyond the round-off allowed
 };
 
@@ -39,11 +33,11 @@ SurfaceOverlap surface_overlap(const BoxBoundaries<D>& b, std::int32_t cell, con
     const double inside = radius - tolerance * b.length(axis);
     const double below = inside + b.displacement(2 * axis, t) - r[axis];
     const double above = r[axis] - (b.length(axis) - inside - b.displacement(2 * axis + 1, t));
-    if (below > 0.0 || above > 0.0) return {2 * axis + (above > below ? 1 : 0), -1, std::max(below, above)};
+    if (below > 0.0 || above > 0.0) return {{2 * axis + (above > below ? 1 : 0), -1}, std::max(below, above)};
   }
   for (const auto& obstacle : b.obstacle_lists().in_cell(cell)) {
     const double depth = (obstacle.radius + radius) * (1.0 - tolerance) - norm(r - obstacle.centre);
-    if (depth > 0.0) return {BoxBoundaries<D>::kObstacles, obstacle.obstacle, depth};
+    if (depth > 0.0) return {{kObstacleSurface, obstacle.obstacle}, depth};
   }
   return {};
 }
@@ -58,7 +52,7 @@ template <int D>
 double surface_hit_slack(const BoxBoundaries<D>& b, int surface, std::int32_t cell, const Vec<D>& r, const Vec<D>& v,
                          double radius, double then, const std::array<double, 3>& gravity) {
   constexpr double kRoundOffUlps = 16.0;  // of a box length: a stored position after re-bases and flights
-  if (surface < BoxBoundaries<D>::kObstacles) {
+  if (surface < kObstacleSurface) {
     const int axis = surface / 2;
     if (b.moving(surface)) {
       const double closing = std::abs(moving_gap_rate(b.moving_plane(surface, radius), v[axis], then));
@@ -81,7 +75,7 @@ double surface_hit_slack(const BoxBoundaries<D>& b, int surface, std::int32_t ce
 struct SurfaceHitGap {
   double gap = std::numeric_limits<double>::infinity();  // < 0: inside
   double allowed = 0.0;                                  // the round-off allowed either way
-  std::int32_t obstacle = -1;
+  SurfaceId surface;                                     // the surface measured
   bool may_fall_short = false;  // a search may have stopped short of contact: a positive gap is fine
 };
 
@@ -92,7 +86,8 @@ template <int D>
 SurfaceHitGap surface_hit_gap(const BoxBoundaries<D>& b, int surface, std::int32_t cell, const Vec<D>& r, double radius,
                               double tolerance, double t, bool curved) {
   SurfaceHitGap g;
-  if (surface < BoxBoundaries<D>::kObstacles) {
+  g.surface = {surface, -1};
+  if (surface < kObstacleSurface) {
     const int axis = surface / 2;
     const double shift = b.displacement(surface, t);
     const double wall = surface % 2 == 0 ? shift : b.length(axis) - shift;
@@ -106,7 +101,7 @@ SurfaceHitGap surface_hit_gap(const BoxBoundaries<D>& b, int surface, std::int32
     if (std::abs(gap) < std::abs(g.gap)) {
       g.gap = gap;
       g.allowed = b.obstacle_lists().tolerance() + tolerance * (obstacle.radius + radius);
-      g.obstacle = obstacle.obstacle;
+      g.surface = {kObstacleSurface, obstacle.obstacle};
     }
   }
   g.may_fall_short = g.gap > 0.0 && std::isfinite(g.gap) && curved;

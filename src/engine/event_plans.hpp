@@ -76,11 +76,10 @@ struct SurfaceHit {
   double energy_before = 0.0;
 };
 
-// A hit of surface `surface` of the boundaries (a wall's face, or an obstacle: `obstacle`).
+// A hit of surface `surface` of the boundaries (none: the grain no longer touches it).
 template <int D>
 struct SurfaceHitPlan {
-  int surface = 0;
-  std::int32_t obstacle = -1;
+  SurfaceId surface{};
   Vec<D> normal{};  // from the grain into the surface
   SurfaceHit<D> hit{};
 };

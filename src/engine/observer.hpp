@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "boundary/surface_id.hpp"
 #include "geometry/vec.hpp"
 
 namespace granule {
@@ -40,37 +41,23 @@ struct CollisionRecord {
   double energy_change = 0.0;
 };
 
-// A grain hitting a surface of infinite mass — a wall or an obstacle —: what the grain did.
+// A grain hitting a surface of infinite mass (boundary/surface_id.hpp: the wall at a face of the
+// box, or a fixed obstacle): the surface takes the momentum `impulse_on_surface` — summed over a
+// time, a wall's stress or an obstacle's drag and lift — and gives the grain the energy
+// `energy_change` (> 0 when a moving or rough wall heats the gas).
 template <int D>
-struct SurfaceContactRecord {
+struct SurfaceHitRecord {
   double time = 0.0;
   std::int32_t particle = 0;
+  SurfaceId surface;
   Vec<D> position;                // lab position of the grain's centre at contact
+  Vec<D> normal;                  // unit vector from the grain's centre into the surface
   Vec<D> velocity_before;
   Vec<D> velocity_after;
+  Vec<D> impulse_on_surface;      // m (v_before − v_after)
   double energy_change = 0.0;     // translational plus rotational, given to the grain
   double restitution = 1.0;       // the restitution applied (1 inside the TC model's window)
   double mass = 1.0;
-};
-
-// A grain hitting a flat wall (SystemParams::walls): the wall at face 2·axis + side (side 0 at
-// coordinate 0, 1 at L) takes the momentum `impulse_on_wall` and gives the grain the energy
-// `energy_change` (> 0 when a moving or rough wall heats the gas).
-template <int D>
-struct WallCollisionRecord : SurfaceContactRecord<D> {
-  int axis = 1;
-  int side = 0;
-  Vec<D> impulse_on_wall;         // m (v_before − v_after)
-};
-
-// A grain hitting fixed obstacle `obstacle` (its index in SystemParams::obstacles): the obstacle
-// takes the momentum `impulse_on_obstacle` (its drag along x and lift along y, summed over a time,
-// are the force on it); `energy_change` ≤ 0, obstacles being at rest.
-template <int D>
-struct ObstacleCollisionRecord : SurfaceContactRecord<D> {
-  std::int32_t obstacle = 0;
-  Vec<D> normal;                  // unit vector from the grain's centre to the obstacle's (image's)
-  Vec<D> impulse_on_obstacle;     // m (v_before − v_after)
 };
 
 // A disk leaving through the top or bottom of a Lees–Edwards box re-enters from the image on the
@@ -90,8 +77,7 @@ class EventObserver {
   virtual ~EventObserver() = default;
   virtual void on_collision(const CollisionRecord<D>& record) = 0;
   virtual void on_boundary_crossing(const BoundaryCrossingRecord&) {}
-  virtual void on_wall_collision(const WallCollisionRecord<D>&) {}
-  virtual void on_obstacle_collision(const ObstacleCollisionRecord<D>&) {}
+  virtual void on_surface_hit(const SurfaceHitRecord<D>&) {}
 };
 
 }  // namespace granule

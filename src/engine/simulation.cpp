@@ -43,10 +43,9 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
-      boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
+      boundaries_(boundaries_of(params, grid)),
       motion_(params.gravity),
       protocol_(image_protocol(params)) {
-  set_obstacles();
   load(state);
   if (params.tc_duration > 0.0) {
     last_collision_ = clock.last_collision;
@@ -83,7 +82,7 @@ template <int D>
 double Simulation<D>::bytes_per_particle() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t total = bytes(particles_) + bytes(diameter_) + bytes(mass_) + bytes(last_collision_) +
-                      bytes(user_id_) + lists_.bytes() + queue_.bytes() + boundaries_.obstacle_lists().bytes();
+                      bytes(user_id_) + lists_.bytes() + queue_.bytes() + boundaries_.bytes();
   for (const auto& w : spin_) total += bytes(w);
   return static_cast<double>(total) / static_cast<double>(params_.particles);
 }
@@ -139,16 +138,14 @@ void Simulation<D>::rebuild() {
 
 template <int D>
 void Simulation<D>::set_surfaces(const SystemParams& p) {
-  params_.wall = p.wall;
-  params_.obstacles = p.obstacles;
-  boundaries_.set_walls(p.wall);
-  boundaries_.set_obstacle_restitutions(p.obstacles);
+  params_.set_surface_parameters(p);
+  boundaries_.set_surfaces(p.surfaces());
 }
 
 template <int D>
-void Simulation<D>::set_obstacles() {
-  const CellLayout cells{{grid_.nx, grid_.ny, grid_.nz}, {grid_.width, grid_.height, grid_.depth}};
-  boundaries_.set_obstacles(params_.obstacles, cells, 0.5 * params_.diameter);
+BoxBoundaries<D> Simulation<D>::boundaries_of(const SystemParams& p, const CellGrid& grid) {
+  const CellLayout cells{{grid.nx, grid.ny, grid.nz}, {grid.width, grid.height, grid.depth}};
+  return BoxBoundaries<D>(p.surfaces(), ShearFrame{p.length_x, p.length_y, 0.0}, p.length_z, cells, 0.5 * p.diameter);
 }
 
 template <int D>
@@ -222,7 +219,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
     if (j >= 0) prefetch_lines(particles_.data() + j, prefetches_records());
     if (kind == EventKind::kCollision) __builtin_prefetch(&slot(j));  // re-scheduled below, if valid
     bool collided = false;
-    bool hit_wall = false;  // or an obstacle: any surface
+    bool hit_surface_now = false;
     if (kind == EventKind::kCollision) {
       if (!candidate_valid(i)) {
         predict(i);  // the partner has collided since: stale
@@ -233,7 +230,7 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
       return StopReason::kNoEvents;  // its time is +inf, so the stop above returns first
     } else if (is_surface_hit(kind)) {
       commit(plan_surface_hit(i, hit_surface(kind)));
-      hit_wall = true;
+      hit_surface_now = true;
     } else {
       commit(plan_crossing(i, kind));
     }
@@ -243,9 +240,9 @@ StopReason Simulation<D>::run(double until_time, std::int64_t until_collisions) 
 #endif
       rebase();
     }
-    // Wall hits count towards collapse too: a grain bouncing ever lower on a floor (without the
+    // Surface hits count towards collapse too: a grain bouncing ever lower on a floor (without the
     // TC model) hits it infinitely often in a finite time.
-    if (collided || hit_wall) {
+    if (collided || hit_surface_now) {
       if (collapse_detector_.on_collision(t_now_)) {
         const Vector where = position_now(i);
         collapse_ = {time(), user_id(i), collided ? user_id(j) : -1, {where[0], where[1], D == 3 ? where[D - 1] : 0.0}};

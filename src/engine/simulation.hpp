@@ -201,9 +201,10 @@ class Simulation {
   SurfaceHit<D> plan_surface_hit(std::int32_t i, const Vector& before, const Vector& k_hat, const CollisionLaw& law,
                                  const Vector& surface_velocity) const;
   bool apply(const SurfaceHit<D>& hit);
-  void describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& record) const;
-  // A hit of surface `surface` of the boundaries (a wall, an obstacle), whose contact they describe.
-  SurfaceHitPlan<D> plan_surface_hit(std::int32_t i, int surface) const;
+  // A hit of a surface of kind `kind` (boundary/surface_id.hpp), whose contact the boundaries
+  // describe, and what observers are told of it.
+  SurfaceHitPlan<D> plan_surface_hit(std::int32_t i, int kind) const;
+  SurfaceHitRecord<D> describe(const SurfaceHitPlan<D>& plan) const;
   void commit(const SurfaceHitPlan<D>& plan);
   // The flight of particle i through its position now with a new velocity, and storing it.
   FlightState<D> flight_through_now(std::int32_t i, const Vector& velocity) const;
@@ -337,12 +338,12 @@ class Simulation {
   // The image of a partner at lab offset `offset` from a particle in contact with it, now.
   using PartnerImage = typename BoxBoundaries<D>::PartnerImage;
   PartnerImage nearest_image(const Vector& offset) const { return boundaries_.nearest_image(offset, strain()); }
-  // The surfaces' parameters — the walls', and the obstacles' restitutions — in params_ (what
-  // params() reports and checkpoints hold) and in the boundaries (what the engine applies).
+  // The surfaces' parameters of p in params_ (what params() reports and checkpoints hold) and in the
+  // boundaries (what the engine applies).
   void set_surfaces(const SystemParams& p);
-  // The obstacles of params_ given to the boundaries, listed by the cells of grid_ (the largest grain
+  // The boundaries of p's box with its surfaces listed by the cells of `grid` (the largest grain
   // radius is σ/2).
-  void set_obstacles();
+  static BoxBoundaries<D> boundaries_of(const SystemParams& p, const CellGrid& grid);
   // GRANULE_PARANOID: the popped event, re-derived from the state before it runs.
   void check_popped_event(std::int32_t i) const;
 

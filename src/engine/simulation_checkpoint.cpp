@@ -3,11 +3,13 @@
 // detector — so that a run restored from one continues bit for bit (tests/validation).
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 
+#include "boundary/surface_identity.hpp"
 #include "engine/simulation.hpp"
 
 namespace granule {
@@ -19,12 +21,6 @@ template <typename Params, typename Visit>
 void visit_restitutions(Params& p, int dimension, Visit&& visit) {
   visit("restitution", p.restitution);
   if (p.roughness.rough) visit("tangential_restitution", p.roughness.tangential_restitution);
-  for (int face = 0; face < 2 * dimension; ++face) {
-    if (!p.walls[static_cast<std::size_t>(face / 2)]) continue;
-    auto& wall = p.wall[static_cast<std::size_t>(face)];
-    visit("wall_" + std::to_string(face) + "_restitution", wall.restitution);
-    visit("wall_" + std::to_string(face) + "_tangential_restitution", wall.tangential_restitution);
-  }
 }
 
 // The parameters a checkpoint must agree with: those the run has at the checkpoint, which the
@@ -56,31 +52,13 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
   }
 }
 
-// The fixed parameters of spin, walls and gravity a run has, by checkpoint name (none for a plain
-// run: its checkpoint holds no such entries).
-std::map<std::string, double> surface_parameters(const SystemParams& p, int dimension) {
+// The fixed parameters of spin and gravity a run has, by checkpoint name (none for a run of
+// smooth grains without gravity: its checkpoint holds no such entries).
+std::map<std::string, double> law_and_motion_parameters(const SystemParams& p, int dimension) {
   std::map<std::string, double> out;
   if (p.roughness.rough) {
     out["inertia_factor"] = p.roughness.inertia_factor;
     out["friction"] = p.roughness.friction;
-  }
-  for (int axis = 0; axis < dimension; ++axis) {
-    if (!p.walls[static_cast<std::size_t>(axis)]) continue;
-    out[std::string("walls_") + "xyz"[axis]] = 1.0;
-    for (int face = 2 * axis; face <= 2 * axis + 1; ++face) {
-      const WallParams& wall = p.wall[static_cast<std::size_t>(face)];
-      const std::string name = "wall_" + std::to_string(face);
-      for (int a = 0; a < dimension; ++a) out[name + "_velocity_" + "xyz"[a]] = wall.velocity[static_cast<std::size_t>(a)];
-      // Where a moving wall is follows from its drive and the clock: a resumed run must have the same.
-      if (!wall.motion.moves()) continue;
-      out[name + "_vibration_amplitude"] = wall.motion.amplitude;
-      out[name + "_vibration_frequency"] = wall.motion.frequency;
-      if (wall.motion.shape != VibrationShape::kSine) out[name + "_vibration_shape"] = static_cast<double>(wall.motion.shape);
-      for (std::size_t k = 0; k < wall.motion.schedule.size(); ++k) {
-        out[name + "_schedule_time_" + std::to_string(k)] = wall.motion.schedule[k].time;
-        out[name + "_schedule_displacement_" + std::to_string(k)] = wall.motion.schedule[k].displacement;
-      }
-    }
   }
   if (p.has_gravity()) {
     for (int a = 0; a < dimension; ++a) out[std::string("gravity_") + "xyz"[a]] = p.gravity[static_cast<std::size_t>(a)];
@@ -88,34 +66,41 @@ std::map<std::string, double> surface_parameters(const SystemParams& p, int dime
   return out;
 }
 
-// The obstacles as one array, six values each: centre x, y, z, diameter and the restitutions in
-// force (elastic during the pre-run).
-std::vector<double> obstacle_table(const SystemParams& p) {
-  std::vector<double> table;
-  for (const Obstacle& o : p.obstacles) {
-    table.insert(table.end(), {o.centre[0], o.centre[1], o.centre[2], o.diameter, o.restitution, o.tangential_restitution});
-  }
-  return table;
+// Everything a checkpoint records of the surfaces, the collision law and the motion, by name.
+std::map<std::string, std::vector<double>> recorded_parameters(const SystemParams& p, int dimension) {
+  std::map<std::string, std::vector<double>> out = surface_identity(p.surfaces(), dimension);
+  for (const auto& [name, value] : law_and_motion_parameters(p, dimension)) out[name] = {value};
+  return out;
+}
+
+// Every name recorded_parameters can give (of wall schedules, the first point beyond p's).
+std::set<std::string> recorded_parameter_names(const SystemParams& p, int dimension) {
+  std::set<std::string> names = surface_identity_names(p.surfaces(), dimension);
+  SystemParams every;
+  every.roughness.rough = true;
+  every.gravity = {1.0, 1.0, 1.0};
+  for (const auto& entry : law_and_motion_parameters(every, dimension)) names.insert(entry.first);
+  return names;
 }
 
 void check_surfaces_match(const StateArchive& archive, const std::string& prefix, const SystemParams& p, int dimension) {
-  const bool recorded = archive.contains(prefix + "obstacles");
-  if (recorded != !p.obstacles.empty() || (recorded && archive.get<double>(prefix + "obstacles") != obstacle_table(p))) {
-    throw std::runtime_error("checkpoint was written with other obstacles (or their restitutions) than the configuration gives");
-  }
-  const std::map<std::string, double> expected = surface_parameters(p, dimension);
-  for (const auto& [name, value] : expected) {
-    if (!archive.contains(prefix + name) || archive.scalar(prefix + name) != value) {
-      throw std::runtime_error("checkpoint was written with another " + name + " than the configuration gives");
+  const std::map<std::string, std::vector<double>> expected = recorded_parameters(p, dimension);
+  // Shortest names first: the entry that marks a feature (walls_y) before its details (wall_2_…).
+  const auto by_length = [](const std::string& a, const std::string& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; };
+  std::set<std::string, decltype(by_length)> names(by_length);
+  for (const std::string& name : recorded_parameter_names(p, dimension)) names.insert(name);
+  for (const auto& entry : expected) names.insert(entry.first);
+  for (const std::string& name : names) {
+    const bool recorded = archive.contains(prefix + name);
+    const auto wanted = expected.find(name);
+    if (recorded && wanted == expected.end()) {
+      throw std::runtime_error("checkpoint was written with " + name + ", which the configuration does not have");
     }
-  }
-  for (const char* feature : {"inertia_factor", "walls_x", "walls_y", "walls_z", "gravity_x", "wall_0_vibration_amplitude",
-                              "wall_1_vibration_amplitude", "wall_2_vibration_amplitude", "wall_3_vibration_amplitude",
-                              "wall_4_vibration_amplitude", "wall_5_vibration_amplitude", "wall_0_vibration_shape",
-                              "wall_1_vibration_shape", "wall_2_vibration_shape", "wall_3_vibration_shape",
-                              "wall_4_vibration_shape", "wall_5_vibration_shape"}) {
-    if (archive.contains(prefix + feature) && !expected.count(feature)) {
-      throw std::runtime_error(std::string("checkpoint was written with ") + feature + ", which the configuration does not have");
+    if (!recorded && wanted != expected.end()) {
+      throw std::runtime_error("checkpoint was written without " + name + ", which the configuration has");
+    }
+    if (recorded && archive.get<double>(prefix + name) != wanted->second) {
+      throw std::runtime_error("checkpoint was written with another " + name + " than the configuration gives");
     }
   }
 }
@@ -193,8 +178,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_scalar(prefix + "shear_velocity", params_.shear_velocity);
   archive.put_scalar(prefix + "tc_duration", params_.tc_duration);
   visit_restitutions(params_, D, [&](const std::string& name, double value) { archive.put_scalar(prefix + name, value); });
-  for (const auto& [name, value] : surface_parameters(params_, D)) archive.put_scalar(prefix + name, value);
-  if (!params_.obstacles.empty()) archive.put(prefix + "obstacles", obstacle_table(params_));
+  for (auto& [name, values] : recorded_parameters(params_, D)) archive.put(prefix + name, std::move(values));
   archive.put_scalar(prefix + "grid_nx", grid_.nx);
   archive.put_scalar(prefix + "grid_ny", grid_.ny);
   archive.put_scalar(prefix + "grid_width", grid_.width);
@@ -249,10 +233,9 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
       grid_(checked(grid)),
       by_columns_(static_cast<std::uint32_t>(grid.nx)),
       by_rows_(static_cast<std::uint32_t>(grid.ny)),
-      boundaries_(params.walls, params.wall, ShearFrame{params.length_x, params.length_y, 0.0}, params.length_z),
+      boundaries_(boundaries_of(params, grid)),
       motion_(params.gravity),
       protocol_(image_protocol(params)) {
-  set_obstacles();
   check_matches(archive, prefix, params, grid, D);
   check_surfaces_match(archive, prefix, params, D);
   const bool polydisperse = archive.contains(prefix + "particle_diameter");

@@ -57,8 +57,8 @@ void Simulation<D>::check_invariants() const {
     for (const auto& w : spin_) finite = finite && (w.empty() || std::isfinite(w[at(i)]));
     if (!finite) fail("particle ", user_id(i), " has a non-finite state");
     // A grain never passes into a surface beyond round-off.
-    if (const SurfaceOverlap o = surface_overlap(boundaries_, slot(i).cell(), r, radius_of(i), kDistanceTolerance, time()); o.surface >= 0) {
-      fail("particle ", user_id(i), " is inside ", surface_name(o.surface, o.obstacle), " by ", o.depth);
+    if (const SurfaceOverlap o = surface_overlap(boundaries_, slot(i).cell(), r, radius_of(i), kDistanceTolerance, time()); o.surface.found()) {
+      fail("particle ", user_id(i), " is inside ", o.surface.name(), " by ", o.depth);
     }
     // Its cell, from the sheared abscissa ξ and the plain other coordinates.
     const std::array<int, D> cell = cell_coordinates(slot(i).cell());
@@ -128,7 +128,7 @@ void Simulation<D>::check_popped_event(std::int32_t i) const {
     const SurfaceHitGap g = surface_hit_gap(boundaries_, hit_surface(kind), slot(i).cell(), r, radius_of(i), kDistanceTolerance,
                                             time(), params_.has_gravity());
     if (!g.may_fall_short && !(std::abs(g.gap) <= g.allowed)) {
-      fail("hit of ", surface_name(hit_surface(kind), g.obstacle), " by particle ", user_id(i), " popped at a gap of ", g.gap,
+      fail("hit of ", g.surface.name(), " by particle ", user_id(i), " popped at a gap of ", g.gap,
            " (allowed: ", g.allowed, ")");
     }
     return;

@@ -190,23 +190,29 @@ bool Simulation<D>::apply(const SurfaceHit<D>& hit) {
 }
 
 template <int D>
-void Simulation<D>::describe(const SurfaceHit<D>& hit, SurfaceContactRecord<D>& record) const {
+SurfaceHitRecord<D> Simulation<D>::describe(const SurfaceHitPlan<D>& plan) const {
+  const SurfaceHit<D>& hit = plan.hit;
+  SurfaceHitRecord<D> record;
   record.time = time();
   record.particle = user_id(hit.particle);
+  record.surface = plan.surface;
   record.position = position_now(hit.particle);
+  record.normal = plan.normal;
   record.velocity_before = hit.velocity_before;
   record.velocity_after = hit.side.velocity;
+  record.impulse_on_surface = hit.outcome.impulse.total();
   record.energy_change = hit.side.kinetic_energy() - hit.energy_before;
   record.restitution = hit.outcome.restitution;
   record.mass = hit.side.mass;
+  return record;
 }
 
 template <int D>
-SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int surface) const {
+SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int kind) const {
   const Vector before = velocity_now(i);
-  const auto contact = boundaries_.contact(surface, slot(i).cell(), position_now(i), before, radius_of(i), time());
-  if (!contact.touching) return {surface, -1, {}, {.particle = i}};  // nothing to apply
-  return {surface, contact.obstacle, contact.k_hat,
+  const auto contact = boundaries_.contact(kind, slot(i).cell(), position_now(i), before, radius_of(i), time());
+  if (!contact.touching) return {{}, {}, {.particle = i}};  // nothing to apply
+  return {contact.surface, contact.k_hat,
           plan_surface_hit(i, before, contact.k_hat, surface_law(contact.restitution, contact.tangential_restitution), contact.velocity)};
 }
 
@@ -214,21 +220,8 @@ template <int D>
 void Simulation<D>::commit(const SurfaceHitPlan<D>& plan) {
   if (!apply(plan.hit)) return;
   if (!observers_.empty()) {
-    if (plan.obstacle < 0) {
-      WallCollisionRecord<D> record;
-      describe(plan.hit, record);
-      record.axis = plan.surface / 2;
-      record.side = plan.surface % 2;
-      record.impulse_on_wall = plan.hit.outcome.impulse.total();
-      for (EventObserver<D>* observer : observers_) observer->on_wall_collision(record);
-    } else {
-      ObstacleCollisionRecord<D> record;
-      describe(plan.hit, record);
-      record.obstacle = plan.obstacle;
-      record.normal = plan.normal;
-      record.impulse_on_obstacle = plan.hit.outcome.impulse.total();
-      for (EventObserver<D>* observer : observers_) observer->on_obstacle_collision(record);
-    }
+    const SurfaceHitRecord<D> record = describe(plan);
+    for (EventObserver<D>* observer : observers_) observer->on_surface_hit(record);
   }
   predict(plan.hit.particle);
 }
@@ -245,7 +238,7 @@ template bool Simulation<2>::commit(const CollisionPlan<2>&);
 template SurfaceHit<2> Simulation<2>::plan_surface_hit(std::int32_t, const Vec<2>&, const Vec<2>&, const CollisionLaw&,
                                                            const Vec<2>&) const;
 template bool Simulation<2>::apply(const SurfaceHit<2>&);
-template void Simulation<2>::describe(const SurfaceHit<2>&, SurfaceContactRecord<2>&) const;
+template SurfaceHitRecord<2> Simulation<2>::describe(const SurfaceHitPlan<2>&) const;
 template SurfaceHitPlan<2> Simulation<2>::plan_surface_hit(std::int32_t, int) const;
 template void Simulation<2>::commit(const SurfaceHitPlan<2>&);
 template FlightState<3> Simulation<3>::flight_through_now(std::int32_t, const Vec<3>&) const;
@@ -258,7 +251,7 @@ template bool Simulation<3>::commit(const CollisionPlan<3>&);
 template SurfaceHit<3> Simulation<3>::plan_surface_hit(std::int32_t, const Vec<3>&, const Vec<3>&, const CollisionLaw&,
                                                            const Vec<3>&) const;
 template bool Simulation<3>::apply(const SurfaceHit<3>&);
-template void Simulation<3>::describe(const SurfaceHit<3>&, SurfaceContactRecord<3>&) const;
+template SurfaceHitRecord<3> Simulation<3>::describe(const SurfaceHitPlan<3>&) const;
 template SurfaceHitPlan<3> Simulation<3>::plan_surface_hit(std::int32_t, int) const;
 template void Simulation<3>::commit(const SurfaceHitPlan<3>&);
 

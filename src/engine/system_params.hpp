@@ -10,6 +10,7 @@
 
 #include "boundary/obstacle.hpp"
 #include "boundary/shear_protocol.hpp"
+#include "boundary/surface_set.hpp"
 #include "boundary/wall.hpp"
 #include "engine/particle_record.hpp"
 #include "physics/restitution_law.hpp"
@@ -76,6 +77,14 @@ struct SystemParams {
   double renumber_every = kDefaultRenumberEvery;
 
   bool has_walls() const { return walls[0] || walls[1] || walls[2]; }
+  // The surfaces a grain can hit (boundary/surface_set.hpp).
+  SurfaceSet surfaces() const { return {walls, wall, obstacles}; }
+  // The surfaces' parameters of `production` (restitutions, the walls' drives), whose surfaces
+  // stand where these do.
+  void set_surface_parameters(const SystemParams& production) {
+    wall = production.wall;
+    obstacles = production.obstacles;
+  }
   bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0; }
 };
 

@@ -1,17 +1,18 @@
 // Pending events are plain data: one per particle, invalidated lazily by collision counters.
 // A cell crossing is data too: the face it leaves through, 2·axis + direction (0: towards lower
 // coordinates, 1: higher), so that one code path serves every axis of a 2D or 3D grid; and so is
-// a surface hit: the surface of the boundaries (boundary/box_boundaries.hpp), the wall at face
-// 2·axis + side (side 0 at coordinate 0, 1 at L), or 6, an obstacle, which the hit's execution
-// finds again as the one the grain touches.
+// a surface hit: the kind of surface of the boundaries (boundary/surface_id.hpp), which the hit's
+// execution resolves to the surface the grain touches.
 #pragma once
 
 #include <cstdint>
 
+#include "boundary/surface_id.hpp"
+
 namespace granule {
 
-// One byte per particle: 0 nothing, 1 a collision, 2 + face a crossing of that face, 8 + surface a
-// hit of that surface (8: past the crossings of a 3D grid, so 2D and 3D share the codes).
+// One byte per particle: 0 nothing, 1 a collision, 2 + face a crossing of that face, 8 + kind a
+// hit of a surface of that kind (8: past the crossings of a 3D grid, so 2D and 3D share the codes).
 enum class EventKind : std::uint8_t {
   kNone = 0,       // nothing ahead (event time is +inf)
   kCollision = 1,  // with `partner`, valid while the partner's collision counter is unchanged
@@ -19,8 +20,7 @@ enum class EventKind : std::uint8_t {
 
 inline constexpr std::uint8_t kFirstCrossing = 2;
 inline constexpr std::uint8_t kFirstSurfaceHit = 8;
-inline constexpr int kSurfaces = 7;  // six wall faces and the obstacles
-inline constexpr std::uint8_t kLastEventKind = kFirstSurfaceHit + kSurfaces - 1;
+inline constexpr std::uint8_t kLastEventKind = kFirstSurfaceHit + kSurfaceKinds - 1;
 
 constexpr EventKind crossing_through(int axis, int direction) {
   return static_cast<EventKind>(kFirstCrossing + 2 * axis + direction);
@@ -36,8 +36,7 @@ constexpr int crossing_axis(EventKind kind) { return (static_cast<int>(kind) - k
 constexpr int crossing_direction(EventKind kind) { return (static_cast<int>(kind) - kFirstCrossing) % 2 == 1 ? 1 : -1; }
 // Whether a kind can exist in d dimensions (checkpoints are checked against it).
 constexpr bool valid_event_kind(std::uint8_t kind, int dimension) {
-  return kind < kFirstCrossing + 2 * dimension || (kind >= kFirstSurfaceHit && kind < kFirstSurfaceHit + 2 * dimension) ||
-         kind == kLastEventKind;
+  return kind < kFirstCrossing + 2 * dimension || (kind >= kFirstSurfaceHit && surface_kind_exists(kind - kFirstSurfaceHit, dimension));
 }
 
 }  // namespace granule

@@ -74,11 +74,6 @@ void GlobalDiagnostics<D>::on_collision(const CollisionRecord<D>& record) {
 }
 
 template <int D>
-void GlobalDiagnostics<D>::on_wall_collision(const WallCollisionRecord<D>& record) {
-  walls_.add(record);
-}
-
-template <int D>
 void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
   impulse_sum_ = 0.0;
   impulse_xy_sum_ = 0.0;

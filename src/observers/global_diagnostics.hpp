@@ -115,8 +115,10 @@ class GlobalDiagnostics final : public EventObserver<D> {
       : GlobalDiagnostics(params, FieldGrid{cells_x, cells_y, params.length_x, params.length_y}) {}
 
   void on_collision(const CollisionRecord<D>& record) override;
-  void on_wall_collision(const WallCollisionRecord<D>& record) override;
-  void on_obstacle_collision(const ObstacleCollisionRecord<D>& record) override { obstacles_.add(record); }
+  void on_surface_hit(const SurfaceHitRecord<D>& record) override {
+    walls_.add(record);
+    obstacles_.add(record);
+  }
   // An empty sample with this run's columns (for readers of checkpoints).
   DiagnosticsSample layout() const { return diagnostics_layout(params_); }
   // Measure the configuration `state` at time t (collisions since production started) and

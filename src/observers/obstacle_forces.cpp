@@ -3,11 +3,12 @@
 namespace granule {
 
 template <int D>
-void ObstacleForces<D>::add(const ObstacleCollisionRecord<D>& r) {
-  ObstacleForce& sums = sums_[static_cast<std::size_t>(r.obstacle)];
-  sums.drag += r.impulse_on_obstacle[0];
-  sums.lift += r.impulse_on_obstacle[1];
-  if constexpr (D == 3) sums.force_z += r.impulse_on_obstacle[2];
+void ObstacleForces<D>::add(const SurfaceHitRecord<D>& r) {
+  if (r.surface.obstacle() < 0) return;
+  ObstacleForce& sums = sums_[static_cast<std::size_t>(r.surface.obstacle())];
+  sums.drag += r.impulse_on_surface[0];
+  sums.lift += r.impulse_on_surface[1];
+  if constexpr (D == 3) sums.force_z += r.impulse_on_surface[2];
   sums.collisions += 1.0;
 }
 

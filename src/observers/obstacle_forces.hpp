@@ -46,7 +46,8 @@ template <int D>
 class ObstacleForces {
  public:
   explicit ObstacleForces(const SystemParams& params) : sums_(params.obstacles.size()) {}
-  void add(const ObstacleCollisionRecord<D>& record);
+  // A hit of an obstacle (other surfaces' hits are not its business).
+  void add(const SurfaceHitRecord<D>& record);
   // Over an interval of length dt > 0.
   ObstacleForcesSample sample(double dt) const;
   void clear();

@@ -21,11 +21,13 @@ WallStress<D>::WallStress(const SystemParams& params) {
 }
 
 template <int D>
-void WallStress<D>::add(const WallCollisionRecord<D>& r) {
-  FaceSums& sums = sums_[static_cast<std::size_t>(2 * r.axis + r.side)];
+void WallStress<D>::add(const SurfaceHitRecord<D>& r) {
+  if (!r.surface.wall()) return;
+  FaceSums& sums = sums_[static_cast<std::size_t>(r.surface.face())];
   // The outward normal of face (axis, side) is −ê_axis at 0 and +ê_axis at L.
-  sums.normal += r.side == 0 ? -r.impulse_on_wall[r.axis] : r.impulse_on_wall[r.axis];
-  sums.tangential += r.impulse_on_wall[wall_shear_axis(r.axis)];
+  const int axis = r.surface.axis();
+  sums.normal += r.surface.side() == 0 ? -r.impulse_on_surface[axis] : r.impulse_on_surface[axis];
+  sums.tangential += r.impulse_on_surface[wall_shear_axis(axis)];
   sums.energy += r.energy_change;
   sums.collisions += 1.0;
 }

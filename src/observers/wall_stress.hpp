@@ -50,7 +50,8 @@ template <int D>
 class WallStress {
  public:
   explicit WallStress(const SystemParams& params);
-  void add(const WallCollisionRecord<D>& record);
+  // A hit of a wall (other surfaces' hits are not its business).
+  void add(const SurfaceHitRecord<D>& record);
   // The faces with a wall (the others stay empty) over an interval of length dt > 0.
   std::array<std::optional<WallFaceSample>, 6> sample(double dt) const;
   // Start a new interval.

@@ -101,9 +101,11 @@ ParticleState surface_gas(SystemParams& p, const SurfaceCase& k) {
 template <int D>
 struct EventLog final : EventObserver<D> {
   std::vector<CollisionRecord<D>> collisions;
-  std::vector<WallCollisionRecord<D>> hits;
+  std::vector<SurfaceHitRecord<D>> hits;
   void on_collision(const CollisionRecord<D>& r) override { collisions.push_back(r); }
-  void on_wall_collision(const WallCollisionRecord<D>& r) override { hits.push_back(r); }
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (r.surface.wall()) hits.push_back(r);
+  }
 };
 
 template <int D>
@@ -161,9 +163,9 @@ void check(const SurfaceCase& k) {
     if (expected.second < 0) {
       ++wall_hits;
       ASSERT_FALSE(log.hits.empty()) << "event " << n << ": the reference expects a wall hit";
-      const WallCollisionRecord<D>& hit = log.hits[0];
+      const SurfaceHitRecord<D>& hit = log.hits[0];
       ASSERT_EQ(hit.particle, expected.first) << "event " << n;
-      ASSERT_EQ(2 * hit.axis + hit.side, expected.face) << "event " << n;
+      ASSERT_EQ(2 * hit.surface.axis() + hit.surface.side(), expected.face) << "event " << n;
       ASSERT_NEAR(hit.time, t + expected.delay, tolerance) << "event " << n;
       for (int a = 0; a < D; ++a) ASSERT_NEAR(hit.velocity_after[a], after[0].v[a], 1e-9 * scale) << "event " << n;
     } else {

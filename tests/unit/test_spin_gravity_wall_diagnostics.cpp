@@ -90,11 +90,10 @@ TEST(GravityDiagnostics, PotentialAndTotalEnergy) {
   EXPECT_DOUBLE_EQ(d.gravity->total_energy, 1.25 + 7.5 / 1600.0 + 0.5);
 }
 
-WallCollisionRecord<2> wall_hit(int axis, int side, Vec2 impulse_on_wall, double energy_change) {
-  WallCollisionRecord<2> r;
-  r.axis = axis;
-  r.side = side;
-  r.impulse_on_wall = impulse_on_wall;
+SurfaceHitRecord<2> wall_hit(int axis, int side, Vec2 impulse_on_wall, double energy_change) {
+  SurfaceHitRecord<2> r;
+  r.surface = {2 * axis + side, -1};
+  r.impulse_on_surface = impulse_on_wall;
   r.energy_change = energy_change;
   return r;
 }
@@ -104,9 +103,9 @@ TEST(WallDiagnostics, PressureShearStressAndHeatInputOfKnownRecords) {
   p.walls = {false, true, false};
   GlobalDiagnostics<2> diagnostics(p, 1, 1);
   diagnostics.restart_interval(1.0, 0);
-  diagnostics.on_wall_collision(wall_hit(1, 0, {0.3, -2.0}, 0.25));  // floor: pushed down by 2
-  diagnostics.on_wall_collision(wall_hit(1, 0, {-0.1, -1.0}, -0.05));
-  diagnostics.on_wall_collision(wall_hit(1, 1, {0.2, 4.0}, 0.0));    // ceiling: pushed up by 4
+  diagnostics.on_surface_hit(wall_hit(1, 0, {0.3, -2.0}, 0.25));  // floor: pushed down by 2
+  diagnostics.on_surface_hit(wall_hit(1, 0, {-0.1, -1.0}, -0.05));
+  diagnostics.on_surface_hit(wall_hit(1, 1, {0.2, 4.0}, 0.0));    // ceiling: pushed up by 4
   const DiagnosticsSample d = diagnostics.sample(spinning_disks(), 5.0, 0, 0.0, 0.0);  // Δt = 4
   for (int face : {0, 1, 4, 5}) EXPECT_FALSE(d.walls[static_cast<std::size_t>(face)].has_value()) << face;
   ASSERT_TRUE(d.walls[2].has_value());
@@ -130,7 +129,7 @@ TEST(WallDiagnostics, OpenIntervalSurvivesACheckpoint) {
   p.walls = {true, false, false};  // x walls, 1 long; their shear stress is along y
   GlobalDiagnostics<2> before(p, 1, 1);
   before.restart_interval(0.0, 0);
-  before.on_wall_collision(wall_hit(0, 1, {1.5, -0.5}, 0.1));
+  before.on_surface_hit(wall_hit(0, 1, {1.5, -0.5}, 0.1));
   StateArchive archive;
   before.save(archive, "d/");
   GlobalDiagnostics<2> after(p, 1, 1);
@@ -152,10 +151,9 @@ TEST(WallDiagnostics, FaceAreaOfSpheres) {
   p.length_z = 5.0;
   p.walls = {false, false, true};
   WallStress<3> walls(p);
-  WallCollisionRecord<3> r;
-  r.axis = 2;
-  r.side = 0;
-  r.impulse_on_wall = {0.7, 0.0, -6.0};
+  SurfaceHitRecord<3> r;
+  r.surface = {4, -1};  // the z floor
+  r.impulse_on_surface = {0.7, 0.0, -6.0};
   walls.add(r);
   const auto faces = walls.sample(0.5);
   ASSERT_TRUE(faces[4].has_value());
@@ -195,7 +193,7 @@ TEST(TimeseriesColumns, OptionalColumnsAreWrittenAndReadBack) {
   p.walls = {false, true, false};
   GlobalDiagnostics<2> diagnostics(p, 1, 1);
   diagnostics.restart_interval(0.0, 0);
-  diagnostics.on_wall_collision(wall_hit(1, 0, {0.25, -1.0}, 0.5));
+  diagnostics.on_surface_hit(wall_hit(1, 0, {0.25, -1.0}, 0.5));
   const DiagnosticsSample written = diagnostics.sample(spinning_disks(), 2.0, 0, 0.0, 0.0);
   const std::string header = timeseries_header(written);
   EXPECT_EQ(header, timeseries_header(diagnostics.layout()));

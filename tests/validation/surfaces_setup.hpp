@@ -119,13 +119,14 @@ inline double total_energy(const SystemParams& p, const ParticleState& s) {
 template <int D>
 struct WallLog final : EventObserver<D> {
   bool rough = false;  // rough grains: the record's own energy change (smooth: thesis eq 1.2's loss)
-  std::vector<WallCollisionRecord<D>> hits;
+  std::vector<SurfaceHitRecord<D>> hits;
   Vec<D> impulse_on_walls;
   double wall_energy = 0.0, collision_energy = 0.0, magnitude = 0.0;
   std::int64_t collisions = 0;
-  void on_wall_collision(const WallCollisionRecord<D>& r) override {
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (!r.surface.wall()) return;
     hits.push_back(r);
-    impulse_on_walls = impulse_on_walls + r.impulse_on_wall;
+    impulse_on_walls = impulse_on_walls + r.impulse_on_surface;
     wall_energy += r.energy_change;
     magnitude += std::abs(r.energy_change);
   }

@@ -109,8 +109,8 @@ void check_bounce_map(VibrationShape shape = VibrationShape::kSine) {
   double t0 = 0.0, y0 = y_start, u0 = 0.0;
   const double step = 1e-4 / floor.frequency;
   for (std::size_t k = 0; k < log.hits.size(); ++k) {
-    const WallCollisionRecord<D>& hit = log.hits[k];
-    ASSERT_EQ(hit.axis * 2 + hit.side, 2) << "bounce " << k;
+    const SurfaceHitRecord<D>& hit = log.hits[k];
+    ASSERT_EQ(hit.surface.axis() * 2 + hit.surface.side(), 2) << "bounce " << k;
     const double t = next_landing(floor, radius, g, t0, y0, u0, step);
     EXPECT_NEAR(hit.time, t, 1e-9) << "bounce " << k;
     EXPECT_NEAR(hit.position[1], radius + floor.h(hit.time), 1e-11) << "bounce " << k;
@@ -269,8 +269,8 @@ void check_tangential_drive(const ShearHistory& history, double steady, const st
   Simulation<D> sim = driven_grain<D>(p, 0.5, {0.2, 3.1}, log);
   sim.run(12.0, kNoCollisionLimit);
   ASSERT_GE(log.hits.size(), 30u);
-  for (const WallCollisionRecord<D>& hit : log.hits) {
-    const double w = (hit.side == 0 ? -0.5 : 0.5) * wall_speed(hit.time);
+  for (const SurfaceHitRecord<D>& hit : log.hits) {
+    const double w = (hit.surface.side() == 0 ? -0.5 : 0.5) * wall_speed(hit.time);
     EXPECT_NEAR(hit.velocity_after[0], 2.0 * w - hit.velocity_before[0], 1e-13) << "t = " << hit.time;
     EXPECT_NEAR(std::abs(hit.velocity_after[1]), 3.1, 1e-13);
   }

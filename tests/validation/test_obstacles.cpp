@@ -32,13 +32,14 @@ constexpr std::int64_t kNoCollisionLimit = std::numeric_limits<std::int64_t>::ma
 
 template <int D>
 struct ObstacleLog final : EventObserver<D> {
-  std::vector<ObstacleCollisionRecord<D>> hits;
+  std::vector<SurfaceHitRecord<D>> hits;
   Vec<D> impulse_on_obstacles;
   double energy = 0.0, magnitude = 0.0;
   void on_collision(const CollisionRecord<D>&) override {}
-  void on_obstacle_collision(const ObstacleCollisionRecord<D>& r) override {
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (r.surface.obstacle() < 0) return;
     hits.push_back(r);
-    impulse_on_obstacles = impulse_on_obstacles + r.impulse_on_obstacle;
+    impulse_on_obstacles = impulse_on_obstacles + r.impulse_on_surface;
     energy += r.energy_change;
     magnitude += std::abs(r.energy_change);
   }
@@ -75,7 +76,7 @@ void check_scattering(double b_over_s, double e) {
   const double v_t2 = b_over_s * b_over_s;
   EXPECT_NEAR(dot(hit.velocity_after, v0), v_t2 - e * v_n2, 1e-12) << "b/S = " << b_over_s;  // cos χ for e = 1
   EXPECT_NEAR(norm2(hit.velocity_after), v_t2 + e * e * v_n2, 1e-12);
-  EXPECT_EQ(hit.obstacle, 0);
+  EXPECT_EQ(hit.surface.obstacle(), 0);
 }
 
 TEST(Obstacles, DeflectGrainsByTheHardSphereScatteringAngle) {
@@ -236,7 +237,7 @@ TEST(Obstacles, AnElasticGasConservesEnergyWithObstacles) {
   // The obstacle on the x = 0 face is hit through its images on both sides.
   std::array<int, 2> sides{};
   for (const auto& hit : log.hits) {
-    if (hit.obstacle == 1) ++sides[hit.position[0] > 0.25 ? 1 : 0];
+    if (hit.surface.obstacle() == 1) ++sides[hit.position[0] > 0.25 ? 1 : 0];
   }
   EXPECT_GT(sides[0], 10);
   EXPECT_GT(sides[1], 10);
@@ -286,7 +287,7 @@ TEST(Obstacles, TheMomentumFluxOntoAnObstacleInADiluteGasIsNT) {
     const double t0 = sim.time();
     sim.run(t0 + batch_time, kNoCollisionLimit);
     double normal = 0.0;
-    for (const auto& hit : log.hits) normal += dot(hit.impulse_on_obstacle, hit.normal);
+    for (const auto& hit : log.hits) normal += dot(hit.impulse_on_surface, hit.normal);
     pressure.push_back(normal / (batch_time * circumference) / (density * temperature));
   }
   double mean = 0.0;

@@ -29,8 +29,9 @@ struct Recorder final : EventObserver<D> {
   void on_boundary_crossing(const BoundaryCrossingRecord& r) override {
     crossings.emplace_back(r.time, r.particle, r.direction, r.velocity_x_after);
   }
-  void on_wall_collision(const WallCollisionRecord<D>& r) override {
-    wall_hits.emplace_back(r.time, r.particle, r.axis, r.side, r.energy_change);
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (!r.surface.wall()) return;
+    wall_hits.emplace_back(r.time, r.particle, r.surface.axis(), r.surface.side(), r.energy_change);
   }
 };
 

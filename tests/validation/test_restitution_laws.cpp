@@ -48,7 +48,8 @@ struct ContactLog final : EventObserver<D> {
     rebound.push_back(-dot(after, r.contact_normal) / dot(r.relative_velocity, r.contact_normal));
     applied.push_back(r.restitution);
   }
-  void on_wall_collision(const WallCollisionRecord<D>& r) override {
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (!r.surface.wall()) return;
     rebound.push_back(-r.velocity_after[0] / r.velocity_before[0]);
     applied.push_back(r.restitution);
   }

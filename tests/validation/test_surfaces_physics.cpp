@@ -34,9 +34,10 @@ template <int D>
 struct WallMomentum final : EventObserver<D> {
   std::array<Vec<D>, 6> impulse{};
   void on_collision(const CollisionRecord<D>&) override {}
-  void on_wall_collision(const WallCollisionRecord<D>& r) override {
-    auto& total = impulse[static_cast<std::size_t>(2 * r.axis + r.side)];
-    total = total + r.impulse_on_wall;
+  void on_surface_hit(const SurfaceHitRecord<D>& r) override {
+    if (!r.surface.wall()) return;
+    auto& total = impulse[static_cast<std::size_t>(r.surface.face())];
+    total = total + r.impulse_on_surface;
   }
 };
 

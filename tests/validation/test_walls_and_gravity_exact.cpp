@@ -77,9 +77,9 @@ void check_bounces(bool rough_grain) {
   // A smooth grain meets the rough floor as a grain of infinite moment of inertia: its slip is
   // multiplied by −β_w; a rough disk (q = ½) by 1 − (1 + β_w) q/(1 + q) on its first bounce.
   for (int k = 0; k < bounces; ++k) {
-    const WallCollisionRecord<D>& hit = log.hits[static_cast<std::size_t>(k)];
-    EXPECT_EQ(hit.axis, 1);
-    EXPECT_EQ(hit.side, 0);
+    const SurfaceHitRecord<D>& hit = log.hits[static_cast<std::size_t>(k)];
+    EXPECT_EQ(hit.surface.axis(), 1);
+    EXPECT_EQ(hit.surface.side(), 0);
     EXPECT_NEAR(hit.time, t, 1e-12 * (1.0 + t)) << "bounce " << k;
     EXPECT_NEAR(hit.velocity_before[1], -std::pow(e_w, k) * g * t1, 1e-11) << "bounce " << k;
     EXPECT_NEAR(hit.velocity_after[1], std::pow(e_w, k + 1) * g * t1, 1e-11) << "bounce " << k;
