@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/exit_codes.hpp"
+#include "app/analyze/analysis_exit.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "driver/measurement_replay.hpp"
 #include "driver/run_beginnings.hpp"
@@ -26,10 +27,7 @@ struct CollisionsOptions {
   std::string out;
 };
 
-int bad_collisions_input(const std::string& message) {
-  fmt::print(stderr, "granule analyze collisions: error: {}\n", message);
-  return kExitBadInput;
-}
+int bad_collisions_input(const std::string& message) { return refuse_analysis_input("collisions", message); }
 
 int analyze_collisions(const CollisionsOptions& o) {
   driver::ReplayStart start;

@@ -9,6 +9,7 @@
 #include <new>
 #include <optional>
 
+#include "app/analyze/analysis_exit.hpp"
 #include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
@@ -40,10 +41,7 @@ struct F1CommandOptions {
   F1Options f1;
 };
 
-int bad_input(const std::string& message) {
-  fmt::print(stderr, "granule analyze f1: error: {}\n", message);
-  return kExitBadInput;
-}
+int bad_input(const std::string& message) { return refuse_analysis_input("f1", message); }
 
 int analyze_f1(const F1CommandOptions& o) {
   // 1. Every input error is found before anything is read at length or written.
@@ -118,12 +116,12 @@ int analyze_f1(const F1CommandOptions& o) {
                                     run.frames_used, system.particles, f.speed_bins, f.angle_bins))) {
     return *refused;
   }
-  std::vector<WindowResult> results;
-  try {
+  return run_analysis("f1", [&] {
     const std::vector<WindowSamples> windows =
         sample_snapshot_windows(o.snapshots, first, o.from_frame, sampling, densities, temperatures);
     fmt::print("sampled {} frames ({} to {}) on {} x {} cells\n", run.frames_used, o.from_frame, first.frames - 1,
                sampling.grid.nx, sampling.grid.ny);
+    std::vector<WindowResult> results;
     for (const WindowSamples& w : windows) {
       WindowResult r = analyse_window(w, f);
       if (!r.analysed) {
@@ -139,18 +137,8 @@ int analyze_f1(const F1CommandOptions& o) {
       return kExitNoWindow;
     }
     for (const std::string& path : write_f1_outputs(o.out, run, results, thesis_comparison_csv(system, results))) fmt::print("wrote {}\n", path);
-  } catch (const InputError& refused) {  // a damaged or malformed input: nothing written
-    fmt::print(stderr, "granule analyze f1: error: {}\n", refused.what());
-    return kExitBadInput;
-  } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
-    throw;
-  } catch (const std::bad_alloc&) {  // exit 5, by main
-    throw;
-  } catch (const std::exception& failure) {
-    fmt::print(stderr, "granule analyze f1: error: {}\n", failure.what());
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "analysis/cell_fields.hpp"
 #include "app/analyze/analysis_memory.hpp"
+#include "app/analyze/analysis_exit.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
 #include "granule/version.hpp"
@@ -34,21 +35,18 @@ int analyze_fields(const FieldsOptions& o) {
   try {
     head = read_snapshot(o.snapshots, 0);
   } catch (const std::exception& error) {
-    fmt::print(stderr, "granule analyze fields: error: cannot read {}: {}\n", o.snapshots, error.what());
-    return kExitBadInput;
+    return refuse_analysis_input("fields", fmt::format("cannot read {}: {}", o.snapshots, error.what()));
   }
   const std::optional<FrameRange> frames = resolve_frame_range(o.first, o.last, head.frames);
   if (!frames) {
-    fmt::print(stderr, "granule analyze fields: error: --first {} --last {} select no frames: the file has frames 0..{} "
-                       "(negative indices count from the end)\n", o.first, o.last, head.frames - 1);
-    return kExitBadInput;
+    return refuse_analysis_input("fields", fmt::format("--first {} --last {} select no frames: the file has frames 0..{} "
+                                                       "(negative indices count from the end)", o.first, o.last, head.frames - 1));
   }
   FieldGrid grid;
   try {
     grid = fields_from_snapshots_grid(head.metadata.system, o.cells);
   } catch (const InputError& error) {
-    fmt::print(stderr, "granule analyze fields: error: {}\n", error.what());
-    return kExitBadInput;
+    return refuse_analysis_input("fields", error.what());
   }
   // io/fields_from_snapshots keeps a running and an instant set of moments and computes the fields
   // of both for every frame it reads beside frame 0: refused before any of it is allocated.

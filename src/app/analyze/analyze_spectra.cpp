@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/analyze/analysis_exit.hpp"
 #include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
@@ -36,10 +37,7 @@ struct SpectraOptions {
   std::optional<int> max_mode;  // default: default_max_mode of the run's dimension
 };
 
-int bad_spectra_input(const std::string& message) {
-  fmt::print(stderr, "granule analyze spectra: error: {}\n", message);
-  return kExitBadInput;
-}
+int bad_spectra_input(const std::string& message) { return refuse_analysis_input("spectra", message); }
 
 // The memory of a frame's spectra (its FFT grids, mode maps and rings) and of the frame read beside
 // frame 0, against what the machine has: exit 5, its message naming --max-mode (and --dk).
@@ -105,39 +103,30 @@ int analyze_spectra(const SpectraOptions& options) {
   SpectraFromSnapshots analysis(request, first);
 
   // 3. Frame by frame, saying what each dominant mode is worth.
-  try {
-    const double l0 = analysis.cluster_length();
-    fmt::print("{}\n", spectra::describe_comparison(system, l0, request.false_alarm));
-    const auto fields = spectra_file::fields_of(dimension);
-    for (const std::int64_t index : frames) {
-      const FrameSpectra frame = analysis.add_frame(index);
-      fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.time, frame.collisions_per_particle);
-      for (std::size_t f = 0; f < fields.size(); ++f) {
-        if (fields[f].name == std::string("R") || fields[f].name == std::string("P")) {
-          fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, request.false_alarm));
+  return run_analysis("spectra", [&] {
+    try {
+      const double l0 = analysis.cluster_length();
+      fmt::print("{}\n", spectra::describe_comparison(system, l0, request.false_alarm));
+      const auto fields = spectra_file::fields_of(dimension);
+      for (const std::int64_t index : frames) {
+        const FrameSpectra frame = analysis.add_frame(index);
+        fmt::print("frame {} (t = {:.6g}, c = {:.6g}):\n", index, frame.time, frame.collisions_per_particle);
+        for (std::size_t f = 0; f < fields.size(); ++f) {
+          if (fields[f].name == std::string("R") || fields[f].name == std::string("P")) {
+            fmt::print("  {}\n", spectra::describe_dominant(fields[f].name, frame.dominant[f], l0, request.false_alarm));
+          }
         }
       }
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
+      }
+      analysis.publish();
+    } catch (const std::length_error& refused) {  // an annulus width too small for the lattice
+      return bad_spectra_input(fmt::format("--dk: {}", refused.what()));
     }
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      fmt::print("{}\n", analysis.tallies()[f].summary(fields[f].name, request.false_alarm));
-    }
-    analysis.publish();
-  } catch (const std::length_error& refused) {  // an annulus width too small for the lattice
-    fmt::print(stderr, "granule analyze spectra: error: --dk: {}\n", refused.what());
-    return kExitBadInput;
-  } catch (const InputError& refused) {  // a damaged or malformed input: nothing written
-    fmt::print(stderr, "granule analyze spectra: error: {}\n", refused.what());
-    return kExitBadInput;
-  } catch (const IoError&) {  // a file that cannot be written: main reports it, exit 4
-    throw;
-  } catch (const std::bad_alloc&) {  // exit 5, by main
-    throw;
-  } catch (const std::exception& failure) {
-    fmt::print(stderr, "granule analyze spectra: error: {}\n", failure.what());
-    return 1;
-  }
-  fmt::print("wrote {} and {}\n", request.out, analysis.csv_path());
-  return 0;
+    fmt::print("wrote {} and {}\n", request.out, analysis.csv_path());
+    return 0;
+  });
 }
 
 }  // namespace

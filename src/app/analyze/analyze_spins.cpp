@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/analyze/analysis_exit.hpp"
 #include "app/analyze/analysis_memory.hpp"
 #include "app/analyze/analyze_command.hpp"
 #include "app/exit_codes.hpp"
@@ -30,10 +31,7 @@ struct SpinsOptions {
   SpinCorrelationSettings settings;
 };
 
-int bad_spins_input(const std::string& message) {
-  fmt::print(stderr, "granule analyze spins: error: {}\n", message);
-  return kExitBadInput;
-}
+int bad_spins_input(const std::string& message) { return refuse_analysis_input("spins", message); }
 
 // A frame read beside frame 0, its cell list (a cell and a link per grain, the cells no more than
 // the grains) and the bins, against what the machine has.
