@@ -2,12 +2,14 @@
 // - before clustering T̄ decays as exp(−εc), ε = 1 − ẽ² (§2.4.2, T0(s) = T0(0) e^{−2εs}, c = 2s);
 // - the onset of clustering against the linear-stability estimate of the shear mode (2.35);
 // - after clustering T̄ keeps its t⁻² decay (Figs 2.6(C), 2.7(C) and the text before them);
-// - the dominant Fourier mode and L0 (1.1): needs a significance test of the dominant mode.
+// - the dominant Fourier mode against L0 (1.1) at the last frame, and where the modes appear: the
+//   momentum spectrum's before the mass spectrum's (Figs 2.8–2.9).
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "reproduce/dominant_modes.hpp"
 #include "reproduce/study.hpp"
 #include "theory/free_gas_stability.hpp"
 #include "theory/haff.hpp"
@@ -28,7 +30,8 @@ struct FreeSystem {
 constexpr FreeSystem kSystems[] = {{"I", "system_I", 0.98, 550.0, 300.0}, {"II", "system_II", 0.6, 100.0, 10.0}};
 constexpr int kThesisParticles = 40000;
 constexpr double kAreaFraction = 0.05;
-constexpr const char* kSpectraTable = "spectra_dominant.csv";
+// Every frame's dominant modes (analyzed at every snapshot, so the modes can be watched appearing).
+constexpr const char* kSpectraTable = "spectra_all_frames.csv";
 
 // E exceeding the extrapolation of its early exponential decay by this factor marks the onset:
 // the thesis reads the transition off the change of decay rate of E (Fig 2.5).
@@ -51,11 +54,12 @@ equilibrate = 5
 until_collisions_per_particle = {2}
 [output]
 every_collisions_per_particle = 0.5
+snapshot_every_collisions_per_particle = {4}   # 100 frames: the modes watched as they appear
 [sweep]
 seeds = {3}
 )",
                                                 by_scale(scale, 1000, 4000, 20000, kThesisParticles), system.restitution, until_c,
-                                                by_scale(scale, 1, 3, 3, 1))});
+                                                by_scale(scale, 1, 3, 3, 1), until_c / 100.0)});
   }
   return groups;
 }
@@ -93,6 +97,59 @@ CoolingMeasures measure_cooling(const PointOutputs& p, double early_to_c) {
   }
   m.late_exponent = fit_line(log_t, log_late).slope;
   return m;
+}
+
+// The hypothesis that the last frame's disagreement with L0 comes from coarsening, tested where the
+// thesis looks at the modes' birth (Fig 2.8, System I at c = 150, half its onset): the momentum
+// spectrum's dominant mode appears before the mass spectrum's, and at appearance it sits near L0.
+void add_onset_mode_claims(const FreeSystem& system, const std::vector<const PointOutputs*>& points, double l0, double box,
+                           StudyOutcome& out) {
+  const std::string prefix = fmt::format("chapter2.system_{}", system.name);
+  std::vector<double> leads, lengths;
+  int never = 0;  // runs in which P's mode never appeared to stay
+  for (const PointOutputs* p : points) {
+    const std::string table = p->directory + "/" + kSpectraTable;
+    const std::vector<DominantMode> momentum = dominant_modes(table, "P"), mass = dominant_modes(table, "R");
+    const DominantMode* p_first = first_persistent_mode(momentum);
+    if (p_first == nullptr) {
+      ++never;
+      continue;
+    }
+    const DominantMode* r_first = first_persistent_mode(mass);
+    // A mass mode that never appears counts from the run's end: the lead is then a lower bound.
+    const double r_c = r_first != nullptr ? r_first->c : mass.empty() ? NAN : mass.back().c;
+    leads.push_back(r_c - p_first->c);
+    lengths.push_back(p_first->length);
+  }
+  const std::string frames = fmt::format(
+      "granule analyze spectra of every snapshot (M = 64); a mode appears at the first of {} consecutive frames in which it is "
+      "the dominant one and significant at 5 % false alarm; P's appeared in {} of {} run(s)",
+      kPersistentFrames, lengths.size(), points.size());
+  Claim lead = estimate_claim(
+      prefix + ".momentum_mode_first",
+      fmt::format("System {}: a dominant mode appears in the momentum spectrum before one appears in the mass spectrum",
+                  system.name),
+      "thesis §2.2, Fig 2.8 (System I at c = 150: a dominant mode in P, none in R), Fig 2.9", 1.0, mean_over(leads), 0.0,
+      "a sign: the thesis shows the order of appearance, not the delay",
+      "c at which R's mode appears minus c at which P's does; " + frames, ToleranceKind::sign);
+  Claim birth = estimate_claim(
+      prefix + ".momentum_mode_L0_at_onset",
+      fmt::format("System {}: where the momentum spectrum's dominant mode appears, its length is the cluster separation L0 "
+                  "= l/√ε (1.1)",
+                  system.name),
+      "thesis (1.1), §2.2, Fig 2.8", l0, mean_over(lengths), 2.0,
+      "(1.1) is an order-of-magnitude scale (kl ~ √ε, §2.4.3), not a prefactor",
+      "2π/|k| of P's dominant mode at the frame where it appears; " + frames, ToleranceKind::factor);
+  if (never > 0) {
+    const std::string why = fmt::format("the momentum spectrum's dominant mode did not appear in {} of {} run(s)", never,
+                                        points.size());
+    lead.unresolvable = why;
+    birth.unresolvable = why;
+  } else if (birth.measured > 0.5 * box) {
+    birth.checked += "; at appearance the mode is already of the box's size (its lowest modes)";
+  }
+  out.claims.push_back(lead);
+  out.claims.push_back(birth);
 }
 
 void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs& group, StudyOutcome& out) {
@@ -177,6 +234,8 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
 
   // The dominant mode of the mass spectrum R at the last frame (Fig 2.9 at c = 550, Fig 2.10 at c = 100),
   // from `granule analyze spectra`, only where it stands above the noise of uncorrelated positions.
+  const double l0 = theory::cluster_separation(system.restitution, summary_number(first, "diameter"), kAreaFraction);
+  const double box = summary_number(first, "box.0");
   std::vector<double> lengths;
   int compared = 0;
   double largest_p = 0.0;
@@ -197,15 +256,14 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
       prefix + ".dominant_mode_L0",
       fmt::format("System {}: the dominant mode of the mass spectrum sits at the cluster separation L0 = l/√ε (1.1)",
                   system.name),
-      "thesis (1.1), §2.2, Figs 2.9–2.10",
-      theory::cluster_separation(system.restitution, summary_number(first, "diameter"), kAreaFraction), mean_over(lengths), 2.0,
+      "thesis (1.1), §2.2, Figs 2.9–2.10", l0, mean_over(lengths), 2.0,
       "(1.1) is an order-of-magnitude scale (kl ~ √ε, §2.4.3), not a prefactor",
       fmt::format(
           "2π/|k| of the largest R(k) at the last frame (granule analyze spectra, M = 64), significant at 5 % false alarm "
           "in {} of {} run(s)",
           lengths.size(), compared),
       ToleranceKind::factor);
-  if (!lengths.empty() && mode.measured > 0.5 * summary_number(first, "box.0")) {
+  if (!lengths.empty() && mode.measured > 0.5 * box) {
     // Coarsening has reached the box: the comparison with L0 then says how far, not what L0 is.
     mode.checked += "; the dominant length is of the box's size (its lowest modes): the structure has coarsened to the box";
   }
@@ -215,6 +273,7 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
     mode.unresolvable =
         fmt::format("no significant dominant mode: noise would put as much power into one mode with p = {:.2g}", largest_p);
   out.claims.push_back(mode);
+  add_onset_mode_claims(system, points, l0, box, out);
 
   // Figs 2.6(B)/2.7(B): T̄ against c; 2.6(C)/2.7(C): T̄ against t.
   FigureSeries against_c{fmt::format("Granule, N = {}", particles), {}, {}, {}, false}, exponential{"exp(−εc)", {}, {}, {}, true};
@@ -273,7 +332,8 @@ std::vector<PointAnalysis> chapter2_analyses(Scale) {
   std::vector<PointAnalysis> spectra;
   for (const FreeSystem& system : kSystems) {
     spectra.push_back({system.group,
-                       {"analyze", "spectra", "{run}/snapshots.h5", "--frames", "-1", "--out", "{run}/spectra.h5"},
+                       {"analyze", "spectra", "{run}/snapshots.h5", "--frames", "all", "--out", "{run}/spectra.h5", "--csv",
+                        "{run}/" + std::string(kSpectraTable)},
                        kSpectraTable});
   }
   return spectra;

@@ -20,6 +20,13 @@ namespace granule::reproduce {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Where a group's runs lie under the report's directory.
+fs::path group_path(const Study& study, const std::string& group) { return fs::path("runs") / study.name / group; }
+
+}  // namespace
+
 std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, Scale scale, const fs::path& out) {
   std::vector<GroupRun> groups;
   for (const Study* study : studies) {
@@ -27,7 +34,7 @@ std::vector<GroupRun> planned_groups(const std::vector<const Study*>& studies, S
       sweep::SweepSpecResult parsed = sweep::parse_sweep_spec(g.sweep_toml);
       // The catalogue's own specs: a refusal is a bug of the study, not the user's input.
       if (!parsed.spec) throw std::logic_error(fmt::format("{}/{}: {}", study->name, g.name, parsed.error));
-      groups.push_back({study, g.name, std::move(*parsed.spec), sweep::SweepDirectory{out / "runs" / study->name / g.name}});
+      groups.push_back({study, g.name, std::move(*parsed.spec), sweep::SweepDirectory{out / group_path(*study, g.name)}});
     }
   }
   return groups;
@@ -92,7 +99,14 @@ GroupReading read_group(const GroupRun& g) {
   const sweep::SweepTally tally = sweep::write_results(g.dir, g.spec);
   GroupReading reading;
   reading.complete = tally.complete();
-  reading.tally_line = fmt::format("{}/{}: {}", g.study->name, g.group, sweep::tally_line(tally, g.dir));
+  // The results' path as the report's directory sees it: a report moved or committed elsewhere still
+  // names its runs.
+  std::string line = sweep::tally_line(tally, g.dir);
+  const std::string absolute = g.dir.results().string();
+  if (const std::size_t at = line.rfind(absolute); at != std::string::npos) {
+    line.replace(at, absolute.size(), (group_path(*g.study, g.group) / g.dir.results().filename()).string());
+  }
+  reading.tally_line = fmt::format("{}/{}: {}", g.study->name, g.group, line);
   GroupOutputs& outputs = reading.outputs;
   for (const sweep::SweepPoint& point : g.spec.points) {
     PointOutputs p;

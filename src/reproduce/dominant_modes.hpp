@@ -1,0 +1,30 @@
+// The dominant modes of a run's spectra frame by frame, as `granule analyze spectra` tabulates them
+// (spectra_dominant CSV, docs/spectra.md), and when a field's dominant mode first stands above the
+// noise of uncorrelated positions to stay: the thesis watches the momentum spectrum's mode appear
+// before the mass spectrum's (Figs 2.8–2.9).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace granule::reproduce {
+
+struct DominantMode {
+  double c = 0.0;       // collisions per particle of the frame
+  double length = 0.0;  // 2π/|k| of the dominant mode
+  bool significant = false;
+};
+
+// The frames of `field` ("R", "P", …) in the table at `path`, in the order of the file (empty when
+// the file is missing).
+std::vector<DominantMode> dominant_modes(const std::string& path, const std::string& field);
+
+// A mode that is the dominant one and significant in this many consecutive frames has appeared: a
+// single frame's 5 % false alarm would otherwise mark the first of ~100 frames in most runs.
+inline constexpr int kPersistentFrames = 3;
+
+// The first frame from which one mode (the same length) stays dominant and significant for
+// kPersistentFrames frames; nullptr when none does.
+const DominantMode* first_persistent_mode(const std::vector<DominantMode>& frames);
+
+}  // namespace granule::reproduce
