@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "reproduce/cooling_sizes.hpp"
 #include "reproduce/dominant_modes.hpp"
+#include "reproduce/free_cooling.hpp"
 #include "reproduce/study.hpp"
-#include "theory/free_gas_stability.hpp"
 #include "theory/haff.hpp"
 #include "theory/kinetic_scales.hpp"
 
@@ -29,13 +29,10 @@ struct FreeSystem {
 
 constexpr FreeSystem kSystems[] = {{"I", "system_I", 0.98, 550.0, 300.0}, {"II", "system_II", 0.6, 100.0, 10.0}};
 constexpr int kThesisParticles = 40000;
-constexpr double kAreaFraction = 0.05;
+constexpr double kAreaFraction = kFreeCoolingAreaFraction;
 // Every frame's dominant modes (analyzed at every snapshot, so the modes can be watched appearing).
 constexpr const char* kSpectraTable = "spectra_all_frames.csv";
 
-// E exceeding the extrapolation of its early exponential decay by this factor marks the onset:
-// the thesis reads the transition off the change of decay rate of E (Fig 2.5).
-constexpr double kOnsetExcess = 1.2;
 
 std::vector<RunGroup> chapter2_runs(Scale scale) {
   std::vector<RunGroup> groups;
@@ -61,46 +58,10 @@ seeds = {3}
                                                 by_scale(scale, 1000, 4000, 20000, kThesisParticles), system.restitution, until_c,
                                                 by_scale(scale, 1, 3, 3, 1), until_c / 100.0)});
   }
+  groups.push_back(cooling_sizes_runs(scale));
   return groups;
 }
 
-// The linear-stability onset: the shear mode of the box's longest wave grows against the thermal
-// speed as exp((ε − 5K²/12) s) ((2.35) with T ∝ e^{−2εs}), from the noise level 1/√N of one
-// mode to order one, so s* = ln √N/(ε − 5K²/12) and c* = 2s* = ln N/(ε − 5K²/12), K = 2π l0/L
-// with l0 of (2.13).
-// NaN when the box is too small for any growing shear mode.
-double linear_stability_onset_c(double restitution, int particles, double diameter, double box) {
-  const double eps = theory::inelasticity(restitution);
-  const double K = 2.0 * std::numbers::pi * theory::effective_mean_free_path(diameter, kAreaFraction) / box;
-  const double growth = theory::free_gas_shear_eigenvalue(K, eps) + 2.0 * eps;
-  return growth > 0.0 ? std::log(static_cast<double>(particles)) / growth : NAN;
-}
-
-// What one run of a free-cooling system shows.
-struct CoolingMeasures {
-  double early_slope = NAN;    // d ln T̄/dc before clustering
-  double onset_c = NAN;        // first c where E exceeds the early exponential by kOnsetExcess
-  double late_exponent = NAN;  // d ln T̄/d ln t over c ∈ [2 onset, end]
-  double late_energy_exponent = NAN;  // d ln E/d ln t over the same c, E the lab kinetic energy (mean flows included)
-};
-
-CoolingMeasures measure_cooling(const PointOutputs& p, double early_to_c) {
-  CoolingMeasures m;
-  const EarlyDecay decay = early_decay(p.samples, early_to_c, kOnsetExcess);
-  m.early_slope = decay.temperature_slope;
-  m.onset_c = decay.onset_c;
-  std::vector<double> log_t, log_late, log_energy;
-  for (const DiagnosticsSample& s : p.samples) {
-    if (std::isfinite(m.onset_c) && s.c >= 2.0 * m.onset_c && s.t > 0.0) {
-      log_t.push_back(std::log(s.t));
-      log_late.push_back(std::log(s.temperature));
-      log_energy.push_back(std::log(s.kinetic_energy));
-    }
-  }
-  m.late_exponent = fit_line(log_t, log_late).slope;
-  m.late_energy_exponent = fit_line(log_t, log_energy).slope;
-  return m;
-}
 
 // The hypothesis that the last frame's disagreement with L0 comes from coarsening, tested where the
 // thesis looks at the modes' birth (Fig 2.8, System I at c = 150, half its onset): the momentum
@@ -344,6 +305,7 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
 StudyOutcome evaluate_chapter2(Scale scale, const StudyOutputs& outputs) {
   StudyOutcome out;
   for (const FreeSystem& system : kSystems) add_system_claims(system, scale, outputs.at(system.group), out);
+  add_cooling_size_claims(scale, outputs.at(cooling_sizes_runs(scale).name), out);
   out.notes.push_back("Runs use the TC model (t_c = 1e-7) against inelastic collapse; the thesis's runs had none.");
   return out;
 }
