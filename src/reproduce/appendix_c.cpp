@@ -58,6 +58,37 @@ seeds = {5}
                      seed, by_scale(scale, 1500, 16000, kThesisSpheres, kThesisSpheres), kRestitution, extra, until_c, seeds);
 }
 
+// Fig C.5's wall-driven shear of rough disks, started from the linear shear profile or from rest.
+std::string wall_shear_toml(Scale scale, int seeds, bool shear_profile) {
+  return fmt::format(R"(seed = 2245
+[system]
+particles = {0}
+area_fraction = 0.05
+box = [1.0, 1.0]
+restitution = 0.9
+tangential_restitution = -0.8
+tc_duration = 1e-7
+[boundary]
+kind = "walls"
+wall_axes = ["y"]
+wall_restitution = 0.8
+wall_tangential_restitution = -0.8
+shear_velocity = 100.0
+[initial]
+temperature = 1.0
+{3}[run]
+until_collisions_per_particle = {1}
+[output]
+every_collisions_per_particle = 1
+[fields]
+cells = [10, 20]
+[sweep]
+seeds = {2}
+)",
+                     by_scale(scale, 1000, 4000, 20000, 20000), by_scale(scale, 20.0, 200.0, 400.0, 600.0), seeds,
+                     shear_profile ? "" : "shear_profile = false\n");
+}
+
 std::vector<RunGroup> appendix_c_runs(Scale scale) {
   const int seeds = by_scale(scale, 1, 3, 3, 1);
   return {
@@ -75,34 +106,10 @@ kind = "lees-edwards"
 shear_velocity = 50.0
 shear_ramp_time = 1.0
 )")},
-      // Fig C.5 (examples/walls_spin_gravity/wall_shear_fig_c5.toml): walls at ∓U/2, U = 100 (the caption gives no speed).
-      {"wall_shear", fmt::format(R"(seed = 2245
-[system]
-particles = {0}
-area_fraction = 0.05
-box = [1.0, 1.0]
-restitution = 0.9
-tangential_restitution = -0.8
-tc_duration = 1e-7
-[boundary]
-kind = "walls"
-wall_axes = ["y"]
-wall_restitution = 0.8
-wall_tangential_restitution = -0.8
-shear_velocity = 100.0
-[initial]
-temperature = 1.0
-[run]
-until_collisions_per_particle = {1}
-[output]
-every_collisions_per_particle = 1
-[fields]
-cells = [10, 20]
-[sweep]
-seeds = {2}
-)",
-                                 by_scale(scale, 1000, 4000, 20000, 20000), by_scale(scale, 20.0, 200.0, 400.0, 600.0),
-                                 seeds)},
+      // Fig C.5 (examples/walls_spin_gravity/wall_shear_fig_c5.toml): walls at ∓U/2, U = 100 (the caption gives no speed),
+      // starting from the linear profile; and, as the hypothesis for its disagreement, from a gas at rest.
+      {"wall_shear", wall_shear_toml(scale, seeds, true)},
+      {"wall_shear_static_start", wall_shear_toml(scale, seeds, false)},
       rough_shear_runs(scale, seeds),
   };
 }
@@ -293,6 +300,17 @@ StudyOutcome evaluate_appendix_c(Scale scale, const StudyOutputs& outputs) {
   const std::vector<DensityLayers> walls = layers_of(outputs.at("wall_shear"));
   add_plug_claims("appendix_c.fig_c5", "Fig C.5",
                   "Fig C.5 caption (N = 20000, ν = 0.05, ẽ = 0.9, β = −0.8, walls e_w = 0.8, β_w = −0.8)", walls, false, out);
+  // The caption likens the plug to "the plug in a simple shear flow driven from a static initial
+  // condition" (Chapter 4): the walls started on a gas at rest.
+  const std::vector<DensityLayers> static_start = layers_of(outputs.at("wall_shear_static_start"));
+  add_plug_claims("appendix_c.fig_c5.static_start",
+                  "Fig C.5 (hypothesis: the walls start on a gas at rest, as the caption's likeness to Chapter 4's static start suggests)",
+                  "Fig C.5 caption (N = 20000, ν = 0.05, ẽ = 0.9, β = −0.8, walls e_w = 0.8, β_w = −0.8)", static_start, false,
+                  out);
+  out.figures.push_back(profiles_figure("appendix_c_fig_c5_static_start_profiles", "Fig C.5",
+                                        "The same wall-bounded shear flow started from a gas at rest: here the density profiles "
+                                        "along x and y",
+                                        static_start));
   out.figures.push_back(profiles_figure("appendix_c_fig_c5_profiles", "Fig C.5",
                                         "A wall-bounded shear flow of rough disks between flat frictional walls moving at ∓U/2 "
                                         "(N = 20000, ν = 0.05, ẽ = 0.9, β = −0.8): here the density profiles along x and y",

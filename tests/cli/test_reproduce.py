@@ -142,7 +142,8 @@ APPENDIX_CLAIMS = {
     "appendix-c": ["appendix_c.fig_c1.early_decay", "appendix_c.fig_c1.onset_as_2d", "appendix_c.fig_c2.clusters_in_flow_plane",
                    "appendix_c.fig_c3.plug_is_streamwise", "appendix_c.fig_c3.plug_in_centre",
                    "appendix_c.fig_c4.neighbours_spin_opposite", "appendix_c.fig_c5.plug_is_streamwise",
-                   "appendix_c.fig_c5.plug_in_centre"],
+                   "appendix_c.fig_c5.plug_in_centre", "appendix_c.fig_c5.static_start.plug_is_streamwise",
+                   "appendix_c.fig_c5.static_start.plug_in_centre"],
 }
 APPENDIX_FIGURES = {"appendix-b": "Appendix B", "appendix-c": "Fig C."}
 appendix = {}
