@@ -16,9 +16,10 @@ namespace granule {
 
 namespace {
 
-// The restitutions a checkpoint records (elastic during the pre-run), by name and reference.
+// The grains' restitutions a checkpoint records (elastic during the pre-run), by name and reference; the
+// surfaces' are in their identity (boundary/surface_identity.hpp).
 template <typename Params, typename Visit>
-void visit_restitutions(Params& p, int dimension, Visit&& visit) {
+void visit_restitutions(Params& p, Visit&& visit) {
   visit("restitution", p.restitution);
   if (p.roughness.rough) visit("tangential_restitution", p.roughness.tangential_restitution);
 }
@@ -44,7 +45,7 @@ void check_matches(const StateArchive& archive, const std::string& prefix, const
   expect("grid_width", g.width);
   expect("grid_height", g.height);
   expect("grid_strain_period", g.strain_period);
-  visit_restitutions(p, dimension, [&](const std::string& name, double value) { expect(name.c_str(), value); });
+  visit_restitutions(p, [&](const std::string& name, double value) { expect(name.c_str(), value); });
   if (dimension == 3) {
     expect("length_z", p.length_z);
     expect("grid_nz", g.nz);
@@ -177,7 +178,7 @@ void Simulation<D>::save(StateArchive& archive, const std::string& prefix) const
   archive.put_scalar(prefix + "length_y", params_.length_y);
   archive.put_scalar(prefix + "shear_velocity", params_.shear_velocity);
   archive.put_scalar(prefix + "tc_duration", params_.tc_duration);
-  visit_restitutions(params_, D, [&](const std::string& name, double value) { archive.put_scalar(prefix + name, value); });
+  visit_restitutions(params_, [&](const std::string& name, double value) { archive.put_scalar(prefix + name, value); });
   for (auto& [name, values] : recorded_parameters(params_, D)) archive.put(prefix + name, std::move(values));
   archive.put_scalar(prefix + "grid_nx", grid_.nx);
   archive.put_scalar(prefix + "grid_ny", grid_.ny);

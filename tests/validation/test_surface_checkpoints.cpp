@@ -86,10 +86,10 @@ TEST(SurfaceCheckpoints, EveryRecordedSurfaceNameIsOneSomeConfigurationWrites) {
     EXPECT_TRUE(names.count("obstacles"));
     EXPECT_EQ(names.count("walls_z"), d == 3 ? 1u : 0u);
     for (int face = 0; face < 2 * d; ++face) {
-      const std::string wall = "wall_" + std::to_string(face);
+      const std::string face_name = "wall_" + std::to_string(face);
       for (const char* part : {"_restitution", "_tangential_restitution", "_vibration_amplitude", "_vibration_frequency",
                                "_vibration_shape", "_velocity_x", "_velocity_y"}) {
-        EXPECT_TRUE(names.count(wall + part)) << wall + part;
+        EXPECT_TRUE(names.count(face_name + part)) << face_name + part;
       }
     }
     EXPECT_FALSE(names.count("wall_" + std::to_string(2 * d) + "_restitution"));
