@@ -66,15 +66,14 @@ seeds = {3}
 // The hypothesis that the last frame's disagreement with L0 comes from coarsening, tested where the
 // thesis looks at the modes' birth (Fig 2.8, System I at c = 150, half its onset): the momentum
 // spectrum's dominant mode appears before the mass spectrum's, and at appearance it sits near L0.
-void add_onset_mode_claims(const FreeSystem& system, const std::vector<const PointOutputs*>& points, double l0, double box,
+void add_onset_mode_claims(const FreeSystem& system, const std::vector<RunModes>& runs, double l0, double box,
                            StudyOutcome& out) {
   const std::string prefix = fmt::format("chapter2.system_{}", system.name);
   std::vector<double> leads, lengths;
   int never = 0;  // runs in which P's mode never appeared to stay
-  for (const PointOutputs* p : points) {
-    const std::string table = p->directory + "/" + kSpectraTable;
-    const std::vector<DominantMode> momentum = dominant_modes(table, "P"), mass = dominant_modes(table, "R");
-    const DominantMode* p_first = first_persistent_mode(momentum);
+  for (const RunModes& modes : runs) {
+    const std::vector<DominantMode>& mass = modes.mass;
+    const DominantMode* p_first = first_persistent_mode(modes.momentum);
     if (p_first == nullptr) {
       ++never;
       continue;
@@ -88,7 +87,7 @@ void add_onset_mode_claims(const FreeSystem& system, const std::vector<const Poi
   const std::string frames = fmt::format(
       "granule analyze spectra of every snapshot (M = 64); a mode appears at the first of {} consecutive frames in which it is "
       "the dominant one and significant at 5 % false alarm; P's appeared in {} of {} run(s)",
-      kPersistentFrames, lengths.size(), points.size());
+      kPersistentFrames, lengths.size(), runs.size());
   Claim lead = estimate_claim(
       prefix + ".momentum_mode_first",
       fmt::format("System {}: a dominant mode appears in the momentum spectrum before one appears in the mass spectrum",
@@ -106,7 +105,7 @@ void add_onset_mode_claims(const FreeSystem& system, const std::vector<const Poi
       "2π/|k| of P's dominant mode at the frame where it appears; " + frames, ToleranceKind::factor);
   if (never > 0) {
     const std::string why = fmt::format("the momentum spectrum's dominant mode did not appear in {} of {} run(s)", never,
-                                        points.size());
+                                        runs.size());
     lead.unresolvable = why;
     birth.unresolvable = why;
   } else if (birth.measured > 0.5 * box) {
@@ -217,20 +216,19 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
   // from `granule analyze spectra`, only where it stands above the noise of uncorrelated positions.
   const double l0 = theory::cluster_separation(system.restitution, summary_number(first, "diameter"), kAreaFraction);
   const double box = summary_number(first, "box.0");
+  std::vector<RunModes> modes;
   std::vector<double> lengths;
   int compared = 0;
   double largest_p = 0.0;
   for (const PointOutputs* p : points) {
-    const auto rows = read_csv_rows(p->directory + "/" + kSpectraTable);
-    for (auto row = rows.rbegin(); row != rows.rend(); ++row) {
-      if (row->at("field") != "R") continue;
-      ++compared;
-      if (row->at("significant") == "1") {
-        lengths.push_back(std::stod(row->at("length")));
-      } else {
-        largest_p = std::max(largest_p, std::stod(row->at("noise_p_value")));
-      }
-      break;
+    modes.push_back(dominant_modes(p->directory + "/" + kSpectraTable));
+    if (modes.back().mass.empty()) continue;
+    const DominantMode& last = modes.back().mass.back();
+    ++compared;
+    if (last.significant) {
+      lengths.push_back(last.length);
+    } else {
+      largest_p = std::max(largest_p, last.noise_p_value);
     }
   }
   Claim mode = estimate_claim(
@@ -254,7 +252,7 @@ void add_system_claims(const FreeSystem& system, Scale scale, const GroupOutputs
     mode.unresolvable =
         fmt::format("no significant dominant mode: noise would put as much power into one mode with p = {:.2g}", largest_p);
   out.claims.push_back(mode);
-  add_onset_mode_claims(system, points, l0, box, out);
+  add_onset_mode_claims(system, modes, l0, box, out);
 
   // Figs 2.6(B)/2.7(B): T̄ against c; 2.6(C)/2.7(C): T̄ against t.
   FigureSeries against_c{fmt::format("Granule, N = {}", particles), {}, {}, {}, false}, exponential{"exp(−εc)", {}, {}, {}, true};

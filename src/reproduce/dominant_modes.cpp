@@ -1,14 +1,20 @@
 #include "reproduce/dominant_modes.hpp"
 
+#include <cstdlib>
+
 #include "reproduce/run_outputs.hpp"
 
 namespace granule::reproduce {
 
-std::vector<DominantMode> dominant_modes(const std::string& path, const std::string& field) {
-  std::vector<DominantMode> out;
+RunModes dominant_modes(const std::string& path) {
+  RunModes out;
   for (const auto& row : read_csv_rows(path)) {
-    if (row.at("field") != field) continue;
-    out.push_back({std::stod(row.at("c")), std::stod(row.at("length")), row.at("significant") == "1"});
+    const std::string& field = row.at("field");
+    if (field != "R" && field != "P") continue;
+    (field == "R" ? out.mass : out.momentum)
+        .push_back({std::stod(row.at("c")), std::stod(row.at("length")), row.at("significant") == "1",
+                    // strtod: p-values below the smallest normal double are 0 to the claims, not an error as for stod.
+                    std::strtod(row.at("noise_p_value").c_str(), nullptr)});
   }
   return out;
 }

@@ -13,11 +13,16 @@ struct DominantMode {
   double c = 0.0;       // collisions per particle of the frame
   double length = 0.0;  // 2π/|k| of the dominant mode
   bool significant = false;
+  double noise_p_value = 1.0;  // of as much power in one mode from uncorrelated positions
 };
 
-// The frames of `field` ("R", "P", …) in the table at `path`, in the order of the file (empty when
-// the file is missing).
-std::vector<DominantMode> dominant_modes(const std::string& path, const std::string& field);
+// A run's frames, in the order of the file, of the mass spectrum R and the momentum spectrum P.
+struct RunModes {
+  std::vector<DominantMode> mass, momentum;
+};
+
+// The table at `path` (both empty when the file is missing).
+RunModes dominant_modes(const std::string& path);
 
 // A mode that is the dominant one and significant in this many consecutive frames has appeared: a
 // single frame's 5 % false alarm would otherwise mark the first of ~100 frames in most runs.
