@@ -3,8 +3,9 @@
 // periodic), or a flat wall at each end (thesis Appendix A.1).  It answers, for the engine, every
 // question that depends on it: where the image across a face sits and how fast it moves, whether a
 // cell at the edge of the grid has neighbours beyond it, the nearest image of a partner, how a
-// position is wrapped into the box, when a grain hits a surface — a wall, or a fixed obstacle, which
-// may stand anywhere — and what the contact is, and what entering from an image does.
+// position is wrapped into the box, when a grain hits a surface — a wall, a fixed obstacle, which
+// may stand anywhere, or a grain at rest — and what the contact is, and what entering from an image
+// does.
 // Flow along x, gradient along y, z plainly periodic (boundary/shear_frame.hpp).
 #pragma once
 
@@ -12,12 +13,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "boundary/moving_wall_hit.hpp"
 #include "boundary/obstacle_hit.hpp"
 #include "boundary/obstacle_lists.hpp"
 #include "boundary/periodic_wrap.hpp"
+#include "boundary/resting_grains.hpp"
 #include "boundary/shear_frame.hpp"
 #include "boundary/surface_id.hpp"
 #include "boundary/surface_set.hpp"
@@ -67,12 +70,45 @@ class BoxBoundaries {
     }
     obstacle_lists_ = ObstacleLists<D>(surfaces.obstacles, cells, images, length_, largest_grain_radius);
     obstacles_ = surfaces.obstacles;
+    if (surfaces.grains_rest) resting_ = RestingGrains<D>(cells, images, length_, largest_grain_radius);
     set_surfaces(surfaces);
   }
 
   const ObstacleLists<D>& obstacle_lists() const { return obstacle_lists_; }
+  // The round surfaces of `kind` (boundary/surface_id.hpp) a grain in `cell` can touch.
+  std::span<const RoundSurface<D>> round_surfaces(int kind, std::int32_t cell) const {
+    return kind == kObstacleSurface ? obstacle_lists_.in_cell(cell) : resting_.in_cell(cell);
+  }
+  double round_tolerance(int kind) const {
+    return kind == kObstacleSurface ? obstacle_lists_.tolerance() : resting_.tolerance();
+  }
+  // The grains at rest (physics/rest_rule.hpp): engine particle `particle` of radius `radius`
+  // stands at `centre` as a fixed support, or moves again.
+  void rest_grain(std::int32_t particle, const Vec<D>& centre, double radius) { resting_.add(particle, centre, radius); }
+  void wake_grain(std::int32_t particle, const Vec<D>& centre, double radius) { resting_.remove(particle, centre, radius); }
+  RestingGrains<D>& resting_grains() { return resting_; }
+  const RestingGrains<D>& resting_grains() const { return resting_; }
+  // Calls visit(k̂, surface) for every static support a grain of radius `radius` in cell `cell`
+  // at r touches within a gap of `tolerance` — a wall that neither moves nor slides,
+  // an obstacle, a grain at rest —, k̂ from the grain's centre to the contact.
+  template <typename Visit>
+  void for_each_static_support(std::int32_t cell, const Vector& r, double radius, double tolerance, Visit&& visit) const {
+    for (int face = 0; face < 2 * D; ++face) {
+      const int axis = face / 2;
+      if (has_images(axis) || moving(face) || driven_[static_cast<std::size_t>(face)] || norm(wall_velocity(face, 0.0)) != 0.0) continue;
+      const double gap = face % 2 == 0 ? r[axis] - radius : length(axis) - radius - r[axis];
+      if (gap <= tolerance) visit(wall_normal(face), SurfaceId{face, -1});
+    }
+    for (const int kind : {kObstacleSurface, kRestingGrainSurface}) {
+      for (const auto& round : round_surfaces(kind, cell)) {
+        const Vector d = round.centre - r;
+        const double distance = norm(d);
+        if (distance - (round.radius + radius) <= tolerance && distance > 0.0) visit((1.0 / distance) * d, SurfaceId{kind, round.index});
+      }
+    }
+  }
   // The memory its lists of surfaces by cell take.
-  std::size_t bytes() const { return obstacle_lists_.bytes(); }
+  std::size_t bytes() const { return obstacle_lists_.bytes() + resting_.bytes(); }
 
   AxisBoundary kind(int axis) const { return kind_[static_cast<std::size_t>(axis)]; }
   // Whether the grid has neighbours beyond its faces along `axis` (no: walls).
@@ -178,10 +214,11 @@ class BoxBoundaries {
         if (has_images(axis)) continue;
         for (int side = 0; side < 2; ++side) {
           const int f = 2 * axis + side;
-          const double t = moving(f) ? moving_wall_hit(flight, axis, r[axis], v[axis], moving_plane(f, radius), now, best,
-                                                       gap_tolerance(axis))
-                           : side == 0 ? flight.time_to_plane(axis, r[axis], v[axis], radius, -1)
-                                       : flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1);
+          double t = moving(f) ? moving_wall_hit(flight, axis, r[axis], v[axis], moving_plane(f, radius), now, best,
+                                                 gap_tolerance(axis))
+                     : side == 0 ? flight.time_to_plane(axis, r[axis], v[axis], radius, -1)
+                                 : flight.time_to_plane(axis, r[axis], v[axis], length(axis) - radius, +1);
+          if (t == 0.0 && !moving(f)) t = return_to_wall(flight, axis, side, v[axis], now);
           if (t < best) {
             best = t;
             surface = f;
@@ -189,17 +226,31 @@ class BoxBoundaries {
         }
       }
     }
-    if (obstacle_lists_.empty()) return;
-    for (const auto& obstacle : obstacle_lists_.in_cell(cell)) {
-      const double t = obstacle_hit<D>(flight, r - obstacle.centre, v, obstacle.radius + grain_radius(), now, best,
-                                       obstacle_lists_.tolerance());
-      if (t < best) {
-        best = t;
-        surface = kObstacleSurface;
+    if (obstacle_lists_.empty() && resting_.count() == 0) return;
+    for (const int kind : {kObstacleSurface, kRestingGrainSurface}) {
+      for (const auto& round : round_surfaces(kind, cell)) {
+        const double t = obstacle_hit<D>(flight, r - round.centre, v, round.radius + grain_radius(), now, best, round_tolerance(kind));
+        if (t < best) {
+          best = t;
+          surface = kind;
+        }
       }
     }
   }
-
+  // A grain found beyond a static wall's contact plane by round-off is hit now if it moves into the
+  // wall.  Moving away from it — a bounce so slow that the plane's round-off exceeds its rise (a
+  // grain set moving from rest) — it is not: its hit would find it moving away, and be found again,
+  // forever.  Gravity towards the wall brings it back to the plane's level after 2|v_n|/g_n, or one
+  // tick of the clock when it does not move, and it is hit then.
+  template <typename Flight>
+  static double return_to_wall(const Flight& flight, int axis, int side, double velocity, double now) {
+    const double into = side == 0 ? -1.0 : 1.0;
+    const double v_in = into * velocity;
+    if (v_in > 0.0) return 0.0;
+    const double g_in = into * 2.0 * flight.half_acceleration(axis);
+    if (!(g_in > 0.0)) return std::numeric_limits<double>::infinity();
+    return clock_moves_on(now, 0.0, -2.0 * v_in / g_in);
+  }
   // A grain's contact with a surface, as its hit's execution sees it.
   struct SurfaceContact {
     bool touching = false;  // touching it and moving into it: else nothing happens
@@ -208,11 +259,15 @@ class BoxBoundaries {
     double restitution = 1.0;
     double tangential_restitution = -1.0;
     SurfaceId surface;
+    // A grain at rest: the grains' own collision law applies, with the grain at rest as a body of
+    // infinite mass.
+    bool grain = false;
   };
   // Whether the grain of radius `radius` in cell `cell`, at r moving at v at production time `now`,
   // touches `surface` while moving into it, by the test its search made (a grain that no longer
-  // moves into it, or that a search stopped short of, is left alone); an obstacle hit finds its
-  // obstacle again as the one nearest contact among those the cell lists.
+  // moves into it, or that a search stopped short of, is left alone); the hit of a round surface
+  // finds it again as the one nearest contact, of those the cell lists that the grain touches
+  // while moving into them.
   SurfaceContact contact(int surface, std::int32_t cell, const Vector& r, const Vector& v, double radius, double now) const {
     SurfaceContact c;
     if (surface < kObstacleSurface) {
@@ -230,22 +285,26 @@ class BoxBoundaries {
       c.tangential_restitution = wall(surface).tangential_restitution;
       return c;
     }
+    // Of those it touches while moving into them, the nearest: a grain in a pocket touches two.
     double nearest = std::numeric_limits<double>::infinity();
-    const typename ObstacleLists<D>::Entry* touched = nullptr;
-    for (const auto& obstacle : obstacle_lists_.in_cell(cell)) {
-      const double gap = std::abs(norm(r - obstacle.centre) - (obstacle.radius + radius));
-      if (gap < nearest) {
+    const RoundSurface<D>* touched = nullptr;
+    for (const auto& round : round_surfaces(surface, cell)) {
+      const double gap = std::abs(norm(r - round.centre) - (round.radius + radius));
+      if (gap < nearest && touches_obstacle<D>(r - round.centre, v, round.radius + radius, round_tolerance(surface))) {
         nearest = gap;
-        touched = &obstacle;
+        touched = &round;
       }
     }
     if (touched == nullptr) return c;
-    c.touching = touches_obstacle<D>(r - touched->centre, v, touched->radius + radius, obstacle_lists_.tolerance());
+    c.touching = true;
     c.k_hat = (1.0 / norm(touched->centre - r)) * (touched->centre - r);
-    const Obstacle& o = obstacles_[static_cast<std::size_t>(touched->obstacle)];
-    c.restitution = o.restitution;
-    c.tangential_restitution = o.tangential_restitution;
-    c.surface = {kObstacleSurface, touched->obstacle};
+    c.surface = {surface, touched->index};
+    c.grain = surface == kRestingGrainSurface;
+    if (!c.grain) {
+      const Obstacle& o = obstacles_[static_cast<std::size_t>(touched->index)];
+      c.restitution = o.restitution;
+      c.tangential_restitution = o.tangential_restitution;
+    }
     return c;
   }
   // The contact plane of a moving wall for a grain of radius `radius` (boundary/moving_wall_hit.hpp).
@@ -289,6 +348,7 @@ class BoxBoundaries {
   std::array<ShearProtocol, 6> along_{}, normal_{};
   ObstacleLists<D> obstacle_lists_;
   std::vector<Obstacle> obstacles_;  // their restitutions in force
+  RestingGrains<D> resting_;
 };
 
 }  // namespace granule

@@ -1,5 +1,5 @@
 // What the engine's invariant checks (engine/simulation_checks.cpp) ask of the surfaces a grain can
-// hit — the walls at the box's faces and the fixed obstacles — so that the checks name no kind of
+// hit — the walls at the box's faces, the fixed obstacles and the grains at rest — so that the checks name no kind of
 // surface: a new kind answers these questions here.  Each answer follows the test its hit search
 // makes (boundary/moving_wall_hit.hpp, boundary/obstacle_hit.hpp): the round-off it allows is the
 // round-off the checks allow.
@@ -24,7 +24,7 @@ struct SurfaceOverlap {
 
 // The first surface that a grain of radius `radius` in cell `cell`, at r at production time t,
 // reaches into by more than round-off: `tolerance` of the box's length for a wall, of the contact
-// distance for an obstacle.
+// distance for a round surface (an obstacle, a grain at rest).
 template <int D>
 SurfaceOverlap surface_overlap(const BoxBoundaries<D>& b, std::int32_t cell, const Vec<D>& r, double radius,
                                double tolerance, double t) {
@@ -35,9 +35,11 @@ SurfaceOverlap surface_overlap(const BoxBoundaries<D>& b, std::int32_t cell, con
     const double above = r[axis] - (b.length(axis) - inside - b.displacement(2 * axis + 1, t));
     if (below > 0.0 || above > 0.0) return {{2 * axis + (above > below ? 1 : 0), -1}, std::max(below, above)};
   }
-  for (const auto& obstacle : b.obstacle_lists().in_cell(cell)) {
-    const double depth = (obstacle.radius + radius) * (1.0 - tolerance) - norm(r - obstacle.centre);
-    if (depth > 0.0) return {{kObstacleSurface, obstacle.obstacle}, depth};
+  for (const int kind : {kObstacleSurface, kRestingGrainSurface}) {
+    for (const auto& round : b.round_surfaces(kind, cell)) {
+      const double depth = (round.radius + radius) * (1.0 - tolerance) - norm(r - round.centre);
+      if (depth > 0.0) return {{kind, round.index}, depth};
+    }
   }
   return {};
 }
@@ -62,11 +64,11 @@ double surface_hit_slack(const BoxBoundaries<D>& b, int surface, std::int32_t ce
     if (g == 0.0) return 0.0;
     return std::sqrt(2.0 * kRoundOffUlps * std::numeric_limits<double>::epsilon() * b.length(axis) / std::abs(g));
   }
-  const double tolerance = b.obstacle_lists().tolerance();
+  const double tolerance = b.round_tolerance(surface);
   double closing = std::numeric_limits<double>::infinity();
-  for (const auto& obstacle : b.obstacle_lists().in_cell(cell)) {
-    const Vec<D> d = r - obstacle.centre;
-    if (std::abs(norm(d) - obstacle.radius - radius) <= 2.0 * tolerance) closing = std::abs(dot(d, v)) / norm(d);
+  for (const auto& round : b.round_surfaces(surface, cell)) {
+    const Vec<D> d = r - round.centre;
+    if (std::abs(norm(d) - round.radius - radius) <= 2.0 * tolerance) closing = std::abs(dot(d, v)) / norm(d);
   }
   return 2.0 * tolerance / closing;
 }
@@ -96,12 +98,12 @@ SurfaceHitGap surface_hit_gap(const BoxBoundaries<D>& b, int surface, std::int32
     g.may_fall_short = b.moving(surface) && g.gap > 0.0;
     return g;
   }
-  for (const auto& obstacle : b.obstacle_lists().in_cell(cell)) {
-    const double gap = norm(r - obstacle.centre) - obstacle.radius - radius;
+  for (const auto& round : b.round_surfaces(surface, cell)) {
+    const double gap = norm(r - round.centre) - round.radius - radius;
     if (std::abs(gap) < std::abs(g.gap)) {
       g.gap = gap;
-      g.allowed = b.obstacle_lists().tolerance() + tolerance * (obstacle.radius + radius);
-      g.surface = {kObstacleSurface, obstacle.obstacle};
+      g.allowed = b.round_tolerance(surface) + tolerance * (round.radius + radius);
+      g.surface = {surface, round.index};
     }
   }
   g.may_fall_short = g.gap > 0.0 && std::isfinite(g.gap) && curved;

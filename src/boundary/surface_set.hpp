@@ -15,6 +15,7 @@ struct SurfaceSet {
   const std::array<bool, 3>& walls;
   const std::array<WallParams, 6>& wall;
   const std::vector<Obstacle>& obstacles;
+  bool grains_rest = false;  // grains may come to rest (physics/rest_rule.hpp)
 };
 
 }  // namespace granule

@@ -76,12 +76,16 @@ struct SurfaceHit {
   double energy_before = 0.0;
 };
 
-// A hit of surface `surface` of the boundaries (none: the grain no longer touches it).
+// A hit of surface `surface` of the boundaries (none: the grain no longer touches it), which may put
+// the grain at rest; or, struck hard enough, the grain at rest it hits moves again and the two
+// collide (physics/rest_rule.hpp).
 template <int D>
 struct SurfaceHitPlan {
   SurfaceId surface{};
   Vec<D> normal{};  // from the grain into the surface
   SurfaceHit<D> hit{};
+  bool comes_to_rest = false;
+  std::int32_t wakes = -1;  // the grain at rest woken, −1: none
 };
 
 }  // namespace granule

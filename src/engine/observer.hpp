@@ -58,6 +58,21 @@ struct SurfaceHitRecord {
   double energy_change = 0.0;     // translational plus rotational, given to the grain
   double restitution = 1.0;       // the restitution applied (1 inside the TC model's window)
   double mass = 1.0;
+  // The hit put the grain at rest (physics/rest_rule.hpp): velocity_after and its spin are zero,
+  // the surface took all its momentum.
+  bool comes_to_rest = false;
+};
+
+// A grain that comes to rest on static supports, or is woken and moves again
+// (physics/rest_rule.hpp): while at rest its weight bears on the supports (observers/wall_stress.hpp
+// passes it to the floor).
+template <int D>
+struct RestRecord {
+  double time = 0.0;
+  std::int32_t particle = 0;
+  Vec<D> position;
+  double mass = 1.0;
+  bool at_rest = false;  // true: came to rest; false: woken
 };
 
 // A disk leaving through the top or bottom of a Lees–Edwards box re-enters from the image on the
@@ -78,6 +93,7 @@ class EventObserver {
   virtual void on_collision(const CollisionRecord<D>& record) = 0;
   virtual void on_boundary_crossing(const BoundaryCrossingRecord&) {}
   virtual void on_surface_hit(const SurfaceHitRecord<D>&) {}
+  virtual void on_rest_change(const RestRecord<D>&) {}
 };
 
 }  // namespace granule

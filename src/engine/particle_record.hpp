@@ -31,9 +31,13 @@ struct alignas(D == 3 ? 64 : 8) ParticleRecord {
   // The collision candidate, pending or not, kept through crossings while it is valid (the
   // partner's count unchanged); its time is computed again when needed, not stored
   // (Simulation::candidate).
-  std::int32_t partner = -1;        // −1: none
+  std::int32_t partner = -1;        // −1: none; kAtRest: the grain is at rest (r its position, v 0)
   std::uint32_t partner_count = 0;  // the partner's count when predicted
 };
+
+// The partner of a grain at rest (physics/rest_rule.hpp): it has no flight and no event; its record
+// holds its position itself and a zero velocity, which the motion does not move.
+inline constexpr std::int32_t kAtRest = -2;
 
 static_assert(sizeof(ParticleRecord<2>) == 48 && sizeof(ParticleRecord<3>) == 64);
 

@@ -23,6 +23,7 @@ inline std::size_t at(std::int32_t i) { return static_cast<std::size_t>(i); }
 template <int D>
 Vec<D> Simulation<D>::position_at(std::int32_t i, double time) const {
   const ParticleRecord<D>& p = particles_[at(i)];
+  if (p.partner == kAtRest) return p.r;
   return motion_.position_at(p.r, p.v, time);
 }
 
@@ -33,6 +34,7 @@ Vec<D> Simulation<D>::position_now(std::int32_t i) const {
 
 template <int D>
 Vec<D> Simulation<D>::velocity_now(std::int32_t i) const {
+  if (at_rest(i)) return {};
   return motion_.velocity_at(particles_[at(i)].v, t_now_);
 }
 
@@ -103,6 +105,7 @@ void Simulation<D>::rebase() {
   // Every false position moves to the new base (particle_record.hpp).
   motion_.visit([&](const auto& flight) {
     for (ParticleRecord<D>& p : particles_) {
+      if (p.partner == kAtRest) continue;  // no flight: its record holds its position
       for (int a = 0; a < D; ++a) flight.advance_base(a, p.r[a], p.v[a], delta);
     }
   });
@@ -125,15 +128,27 @@ void Simulation<D>::rebuild() {
   for (auto& p : particles_) boundaries_.wrap_into_grid(p.r, p.v[0], s);
   lists_.reset(grid_.cell_count());
   queue_.reset(n);
+  boundaries_.resting_grains().clear();
   // Filled in the order of user ids: the order within a list decides ties between candidates, and
-  // must not follow the engine's numbering.
+  // must not follow the engine's numbering.  Grains at rest stand as supports, in no cell list.
   const std::vector<std::int32_t> engine_id = engine_ids();
   for (std::int32_t user = 0; user < n; ++user) {
     const std::int32_t i = engine_id.empty() ? user : engine_id[at(user)];
     slot(i).set_cell(cell_of(position_now(i)));
-    lists_.insert(particles_, i, slot(i).cell());
+    if (at_rest(i)) {
+      boundaries_.rest_grain(i, position_now(i), radius_of(i));
+    } else {
+      lists_.insert(particles_, i, slot(i).cell());
+    }
   }
-  for (std::int32_t i = 0; i < n; ++i) predict(i);
+  for (std::int32_t i = 0; i < n; ++i) {
+    if (at_rest(i)) {
+      slot(i).set_kind(EventKind::kNone);
+      queue_.update(i, kInf);
+    } else {
+      predict(i);
+    }
+  }
 }
 
 template <int D>
@@ -165,7 +180,9 @@ void Simulation<D>::start_production(const SystemParams& production) {
   bool walls_move = false;
   for (int face = 0; face < 2 * D; ++face) walls_move = walls_move || boundaries_.moving(face);
   if (walls_move) {
-    for (std::int32_t i = 0; i < static_cast<std::int32_t>(params_.particles); ++i) predict(i);
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(params_.particles); ++i) {
+      if (!at_rest(i)) predict(i);
+    }
   }
 }
 

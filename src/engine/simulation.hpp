@@ -127,6 +127,8 @@ class Simulation {
   const SystemParams& params() const { return params_; }
   const CellGrid& grid() const { return grid_; }
   const CollapseReport& collapse() const { return collapse_; }
+  // The grains at rest on static supports now (physics/rest_rule.hpp).
+  std::int64_t grains_at_rest() const { return boundaries_.resting_grains().count(); }
   // Memory held per particle by the engine (all arrays, cells and queue), in bytes.
   double bytes_per_particle() const;
   // The number of times the particles have been renumbered in this engine's life (restored ones
@@ -206,6 +208,24 @@ class Simulation {
   SurfaceHitPlan<D> plan_surface_hit(std::int32_t i, int kind) const;
   SurfaceHitRecord<D> describe(const SurfaceHitPlan<D>& plan) const;
   void commit(const SurfaceHitPlan<D>& plan);
+  // Grains at rest (physics/rest_rule.hpp; engine/simulation_rest.cpp): the rule holds in
+  // production; whether a hit leaves grain i at rest; putting it at rest; waking grain j and the
+  // grains at rest it carries (they fly from rest, predicted); the direction of gravity; the gap
+  // within which a grain touches a support: the height a grain at the rest speed rises.
+  bool rest_rule_active() const { return protocol_running_ && params_.rest.on(); }
+  bool at_rest(std::int32_t i) const { return particles_[static_cast<std::size_t>(i)].partner == kAtRest; }
+  bool comes_to_rest(std::int32_t i, const SurfaceHit<D>& hit) const;
+  // Whether grain i at r leans on a static support below its centre (itself, if at rest, excluded).
+  bool leans_on_static_support(std::int32_t i, const Vector& r) const;
+  void put_at_rest(std::int32_t i);
+  void wake(std::int32_t j);
+  Vector down() const;
+  double support_gap() const;
+  // The collision law of a grain with a grain at rest: the grains' own, the one at rest of infinite mass.
+  CollisionLaw resting_grain_law() const {
+    return {params_.restitution, params_.tc_duration, {params_.roughness.tangential_restitution, params_.roughness.friction},
+            true, params_.restitution_law};
+  }
   // The flight of particle i through its position now with a new velocity, and storing it.
   FlightState<D> flight_through_now(std::int32_t i, const Vector& velocity) const;
   void set_flight(std::int32_t i, const FlightState<D>& flight);

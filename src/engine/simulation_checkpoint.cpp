@@ -64,6 +64,10 @@ std::map<std::string, double> law_and_motion_parameters(const SystemParams& p, i
   if (p.has_gravity()) {
     for (int a = 0; a < dimension; ++a) out[std::string("gravity_") + "xyz"[a]] = p.gravity[static_cast<std::size_t>(a)];
   }
+  if (p.rest.on()) {
+    out["rest_speed"] = p.rest.speed;
+    out["wake_speed"] = p.rest.wake_speed;
+  }
   return out;
 }
 
@@ -80,6 +84,7 @@ std::set<std::string> recorded_parameter_names(const SystemParams& p, int dimens
   SystemParams every;
   every.roughness.rough = true;
   every.gravity = {1.0, 1.0, 1.0};
+  every.rest.speed = 1.0;
   for (const auto& entry : law_and_motion_parameters(every, dimension)) names.insert(entry.first);
   return names;
 }
@@ -282,7 +287,9 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
     if (!valid_event_kind(kinds[i], D)) throw std::runtime_error("checkpoint has an unknown event kind");
     const bool collision = kinds[i] == static_cast<std::uint8_t>(EventKind::kCollision);
     const std::int32_t partner = particles_[i].partner;
-    if (cells[i] < 0 || cells[i] >= grid.cell_count() || partner < -1 || partner >= params.particles || (collision && partner < 0)) {
+    const bool resting = partner == kAtRest && params.rest.on() && kinds[i] == static_cast<std::uint8_t>(EventKind::kNone);
+    if (cells[i] < 0 || cells[i] >= grid.cell_count() || (partner < -1 && !resting) || partner >= params.particles ||
+        (collision && partner < 0)) {
       throw std::runtime_error("checkpoint has a disk with an invalid cell or event partner");
     }
     slots[i].set_cell(cells[i]);
@@ -292,6 +299,10 @@ Simulation<D>::Simulation(const SystemParams& params, const CellGrid& grid, cons
   restore_numbering(archive, prefix);
   queue_.restore(archive, prefix + "queue_");
   collapse_detector_.restore(archive, prefix + "collapse_");
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::int32_t>(i);
+    if (at_rest(k)) boundaries_.rest_grain(k, particles_[i].r, radius_of(k));
+  }
   // A damaged or hand-edited checkpoint must not start a run that is silently wrong.
   try {
     check_invariants();

@@ -49,7 +49,15 @@ void Simulation<D>::check_invariants() const {
   }
   const double s = strain();
   const double cell_tolerance = kDistanceTolerance * std::max({grid_.width, grid_.height, grid_.depth});
+  std::int64_t resting = 0;
   for (std::int32_t i = 0; i < n; ++i) {
+    if (at_rest(i)) {
+      // A support (physics/rest_rule.hpp): the moving grains' checks measure their distance to it.
+      if (seen[at(i)]) fail("particle ", user_id(i), " is at rest but in a cell list");
+      if (queue_.time_of(i) != std::numeric_limits<double>::infinity()) fail("particle ", user_id(i), " is at rest but has an event");
+      ++resting;
+      continue;
+    }
     if (!seen[at(i)]) fail("particle ", user_id(i), " is in no cell list");
     const Vector r = position_now(i);
     bool finite = true;
@@ -106,6 +114,7 @@ void Simulation<D>::check_invariants() const {
            t_now_ + fresh.delay(), " but its slot says ", stored, " (approach cosine ", cosine, ")");
     }
   }
+  if (resting != boundaries_.resting_grains().count()) fail(resting, " grains are at rest but the boundaries list ", boundaries_.resting_grains().count());
 }
 
 template <int D>

@@ -204,6 +204,7 @@ SurfaceHitRecord<D> Simulation<D>::describe(const SurfaceHitPlan<D>& plan) const
   record.energy_change = hit.side.kinetic_energy() - hit.energy_before;
   record.restitution = hit.outcome.restitution;
   record.mass = hit.side.mass;
+  record.comes_to_rest = plan.comes_to_rest;
   return record;
 }
 
@@ -212,18 +213,41 @@ SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int kind) cons
   const Vector before = velocity_now(i);
   const auto contact = boundaries_.contact(kind, slot(i).cell(), position_now(i), before, radius_of(i), time());
   if (!contact.touching) return {{}, {}, {.particle = i}};  // nothing to apply
-  return {contact.surface, contact.k_hat,
-          plan_surface_hit(i, before, contact.k_hat, surface_law(contact.restitution, contact.tangential_restitution), contact.velocity)};
+  if (contact.grain && dot(before, contact.k_hat) > params_.rest.wake_speed) {
+    return {contact.surface, contact.k_hat, {.particle = i}, false, contact.surface.index};  // struck hard: it moves
+  }
+  const CollisionLaw law = contact.grain ? resting_grain_law() : surface_law(contact.restitution, contact.tangential_restitution);
+  SurfaceHitPlan<D> plan{contact.surface, contact.k_hat, plan_surface_hit(i, before, contact.k_hat, law, contact.velocity)};
+  if (rest_rule_active() && comes_to_rest(i, plan.hit)) {
+    // Perfectly inelastic: the supports take the grain's momentum, its energy is dissipated.
+    SurfaceHit<D>& hit = plan.hit;
+    hit.outcome.impulse.normal = hit.side.mass * dot(before, contact.k_hat) * contact.k_hat;
+    hit.outcome.impulse.tangential = hit.side.mass * before - hit.outcome.impulse.normal;
+    hit.side.velocity = {};
+    hit.side.spin = {};
+    hit.flight = flight_through_now(i, {});
+    plan.comes_to_rest = true;
+  }
+  return plan;
 }
 
 template <int D>
 void Simulation<D>::commit(const SurfaceHitPlan<D>& plan) {
+  if (plan.wakes >= 0) {
+    wake(plan.wakes);
+    commit(plan_collision(plan.hit.particle, plan.wakes));
+    return;
+  }
   if (!apply(plan.hit)) return;
   if (!observers_.empty()) {
     const SurfaceHitRecord<D> record = describe(plan);
     for (EventObserver<D>* observer : observers_) observer->on_surface_hit(record);
   }
-  predict(plan.hit.particle);
+  if (plan.comes_to_rest) {
+    put_at_rest(plan.hit.particle);
+  } else {
+    predict(plan.hit.particle);
+  }
 }
 
 // The members defined in this file, for both dimensions (the class is instantiated in

@@ -35,6 +35,11 @@ void Simulation<D>::renumber() {
     }
     for (std::int32_t p = lists_.first(id); p != CellLists::kEnd; p = particles_[at(p)].next) destination[at(p)] = next++;
   });
+  // Grains at rest are in no cell list: they follow, in their present order.
+  for (std::size_t k = 0; k < n; ++k) {
+    if (particles_[k].partner == kAtRest) destination[k] = next++;
+  }
+  boundaries_.resting_grains().renumber(destination);
   const std::span<EventSlot> slots = queue_.slots();
   for (ParticleRecord<D>& p : particles_) {
     if (p.partner >= 0) p.partner = destination[at(p.partner)];
@@ -50,7 +55,9 @@ void Simulation<D>::renumber() {
   });
   // Each list in increasing numbers: a cell's particles are then read in memory order.
   lists_.reset(grid_.cell_count());
-  for (std::size_t k = n; k-- > 0;) lists_.insert(particles_, static_cast<std::int32_t>(k), slots[k].cell());
+  for (std::size_t k = n; k-- > 0;) {
+    if (particles_[k].partner != kAtRest) lists_.insert(particles_, static_cast<std::int32_t>(k), slots[k].cell());
+  }
   queue_.relink();
   events_since_renumber_ = 0;
   ++renumberings_;

@@ -13,6 +13,7 @@
 #include "boundary/surface_set.hpp"
 #include "boundary/wall.hpp"
 #include "engine/particle_record.hpp"
+#include "physics/rest_rule.hpp"
 #include "physics/restitution_law.hpp"
 
 namespace granule {
@@ -71,6 +72,9 @@ struct SystemParams {
   // Fixed disks or spheres the grains bounce off (none under Lees–Edwards images).
   std::vector<Obstacle> obstacles;
   RoughnessParams roughness;
+  // Grains at rest on static supports (physics/rest_rule.hpp), in production only: the elastic
+  // pre-run puts no grain at rest.
+  RestParams rest;
   // Events per particle between renumberings of the engine's particles along its cells (0: never;
   // Simulation::renumber).  A matter of speed only: the trajectory is the same for any value.
   // Runs and benchmarks that leave it unset take default_renumber_every().
@@ -78,7 +82,7 @@ struct SystemParams {
 
   bool has_walls() const { return walls[0] || walls[1] || walls[2]; }
   // The surfaces a grain can hit (boundary/surface_set.hpp).
-  SurfaceSet surfaces() const { return {walls, wall, obstacles}; }
+  SurfaceSet surfaces() const { return {walls, wall, obstacles, rest.on()}; }
   // The surfaces' parameters of `production` (restitutions, the walls' drives), whose surfaces
   // stand where these do.
   void set_surface_parameters(const SystemParams& production) {

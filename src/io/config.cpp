@@ -30,7 +30,7 @@ const ConfigSchema& schema() {
       {"system",
        {"dimension", "particles", "area_fraction", "packing_fraction", "diameter", "diameters", "masses", "box",
         "restitution", "restitution_law", "elastic_below", "viscoelastic_constant", "tc_duration", "gravity",
-        "tangential_restitution", "inertia_factor", "friction"}},
+        "rest_speed", "wake_speed", "tangential_restitution", "inertia_factor", "friction"}},
       {"boundary",
        {"kind", "shear_velocity", "shear_ramp_time", "shear_schedule", "shear_oscillation", "shear_tolerance", "wall_axes",
         "wall_restitution", "wall_tangential_restitution", "wall_motion"}},
@@ -111,6 +111,7 @@ RunConfig resolve(const toml::table& root) {
   }
   resolve_roughness(in, c);
   resolve_gravity(in, c);
+  resolve_rest(in, c);
   resolve_obstacles(root, c);
   c.equilibrate = collision_count_setting(in, "initial.equilibrate", n, "no elastic pre-run").value_or(0.0);
 
@@ -278,7 +279,7 @@ std::string to_toml(const RunConfig& c) {
   out += fmt::format("seed = {}\n\n[system]\n", c.seed) + geometry_to_toml(c);
   if (s.restitution_law.kind != RestitutionKind::kViscoelastic) out += fmt::format("restitution = {:.17g}\n", s.restitution);
   out += restitution_law_to_toml(c) + fmt::format("tc_duration = {:.17g}\n", s.tc_duration);
-  out += roughness_to_toml(c) + gravity_to_toml(c) + "\n";
+  out += roughness_to_toml(c) + gravity_to_toml(c) + rest_to_toml(c) + "\n";
   out += speeds_to_toml(c) + rotational_temperature_to_toml(c);
   const char* placement = c.placement == Placement::kRandom ? "random" : c.placement == Placement::kLattice ? "lattice" : "auto";
   out += fmt::format("equilibrate = {:.17g}\n", c.equilibrate);

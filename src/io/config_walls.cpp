@@ -130,4 +130,34 @@ std::string gravity_to_toml(const RunConfig& c) {
                           : fmt::format("gravity = [{:.17g}, {:.17g}]\n", s.gravity[0], s.gravity[1]);
 }
 
+void resolve_rest(const ConfigReader& in, RunConfig& c) {
+  SystemParams& s = c.system;
+  const auto speed = in.number("system.rest_speed", NumberRange{0.0, kUnbounded, true, true},
+                               " (a grain slower than this after a hit of a static support comes to rest)");
+  const auto wake = in.number("system.wake_speed", NumberRange{0.0, kUnbounded, false, true},
+                              " (a grain at rest struck at a larger normal speed moves again)");
+  if (!speed) {
+    if (wake) throw ConfigError{"system.wake_speed needs system.rest_speed: without it no grain comes to rest"};
+    return;
+  }
+  if (!s.has_gravity()) {
+    throw ConfigError{fmt::format("system.rest_speed = {} needs system.gravity: a grain comes to rest where its supports "
+                                  "hold it against gravity, and without gravity nothing holds a grain at rest",
+                                  *speed)};
+  }
+  if (c.lees_edwards) {
+    throw ConfigError{fmt::format("system.rest_speed = {} cannot be combined with boundary.kind = \"lees-edwards\": a grain "
+                                  "at rest is a fixed support, and the sliding images would carry its images through the "
+                                  "flow.  Allowed: walls (boundary.kind = \"walls\") or a periodic box",
+                                  *speed)};
+  }
+  s.rest = {*speed, wake.value_or(*speed)};
+}
+
+std::string rest_to_toml(const RunConfig& c) {
+  const RestParams& r = c.system.rest;
+  if (!r.on()) return {};
+  return fmt::format("rest_speed = {:.17g}\nwake_speed = {:.17g}\n", r.speed, r.wake_speed);
+}
+
 }  // namespace granule

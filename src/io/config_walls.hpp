@@ -1,6 +1,7 @@
 // The flat walls of [boundary] (kind = "walls") and the uniform gravity of [system]
 // (ARCHITECTURE.md, "Spin, walls and gravity"): which axes end in walls, each wall's normal and
-// tangential restitution, the wall velocities of a wall-driven shear, and g.
+// tangential restitution, the wall velocities of a wall-driven shear, g, and the rule that puts
+// grains at rest on static supports.
 #pragma once
 
 #include <string>
@@ -22,5 +23,9 @@ std::string walls_to_toml(const RunConfig& c);
 void resolve_gravity(const ConfigReader& in, RunConfig& c);
 // system.gravity as a TOML line of [system] (none without gravity).
 std::string gravity_to_toml(const RunConfig& c);
+// Grains at rest on static supports (physics/rest_rule.hpp): system.rest_speed and wake_speed.
+// Needs gravity resolved.
+void resolve_rest(const ConfigReader& in, RunConfig& c);
+std::string rest_to_toml(const RunConfig& c);
 
 }  // namespace granule

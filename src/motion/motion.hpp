@@ -56,6 +56,15 @@ class Motion {
       }
     });
   }
+  // The base state (r, v) of the flight that is at r with velocity v a delay t after the base.
+  void base_state(Vector& r, Vector& v, double t) const {
+    visit([&](const auto& flight) {
+      for (int a = 0; a < D; ++a) {
+        v[a] = flight.base_velocity(a, v[a], t);
+        r[a] -= flight.coordinate_at(a, 0.0, v[a], t);
+      }
+    });
+  }
   void advance_base(Vector& r, Vector& v, double t) const {
     visit([&](const auto& flight) {
       for (int a = 0; a < D; ++a) flight.advance_base(a, r[a], v[a], t);

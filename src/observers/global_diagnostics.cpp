@@ -79,7 +79,7 @@ void GlobalDiagnostics<D>::restart_interval(double t, std::int64_t collisions) {
   impulse_xy_sum_ = 0.0;
   interval_start_ = t;
   interval_collisions_ = collisions;
-  walls_.clear();
+  walls_.clear(t);
   obstacles_.clear();
 }
 
@@ -193,7 +193,7 @@ DiagnosticsSample GlobalDiagnostics<D>::sample(const StateBlocks& state, double 
     const double potential = potential_sum / nd;  // −⟨m g·r⟩, zero at the box's origin
     out.gravity = GravitySample{potential, out.kinetic_energy + 0.5 * spin_energy + potential};
   }
-  out.walls = walls_.sample(dt);
+  out.walls = walls_.sample(t, dt);
   if (!params_.obstacles.empty()) out.obstacles = obstacles_.sample(dt);
   restart_interval(t, collisions);
   return out;

@@ -119,6 +119,7 @@ class GlobalDiagnostics final : public EventObserver<D> {
     walls_.add(record);
     obstacles_.add(record);
   }
+  void on_rest_change(const RestRecord<D>& record) override { walls_.add(record); }
   // An empty sample with this run's columns (for readers of checkpoints).
   DiagnosticsSample layout() const { return diagnostics_layout(params_); }
   // Measure the configuration `state` at time t (collisions since production started) and

@@ -7,6 +7,9 @@
 //    time (> 0 when a moving or rough wall heats the gas, < 0 when an inelastic wall cools it);
 //  • collisions: the number of wall collisions in the interval.
 // The wall area is L_other in 2D (a line), L_other1 · L_other2 in 3D.
+// Grains at rest (physics/rest_rule.hpp) bear on the floor — the wall gravity pushes towards —
+// through the bed they stand on: their weight, and the momentum the hits on them take, are the
+// floor's, so that its pressure stays the weight of the grains above it as with every grain moving.
 #pragma once
 
 #include <array>
@@ -50,12 +53,18 @@ template <int D>
 class WallStress {
  public:
   explicit WallStress(const SystemParams& params);
-  // A hit of a wall (other surfaces' hits are not its business).
+  // A hit of a wall, or of a grain at rest (the floor's; other surfaces' hits are not its business).
   void add(const SurfaceHitRecord<D>& record);
-  // The faces with a wall (the others stay empty) over an interval of length dt > 0.
-  std::array<std::optional<WallFaceSample>, 6> sample(double dt) const;
-  // Start a new interval.
-  void clear() { sums_ = {}; }
+  // A grain that came to rest or was woken: its weight bears on the floor while it rests.
+  void add(const RestRecord<D>& record);
+  // The faces with a wall (the others stay empty) over the interval of length dt > 0 ending at t.
+  std::array<std::optional<WallFaceSample>, 6> sample(double t, double dt) const;
+  // Start a new interval at t.
+  void clear(double t) {
+    sums_ = {};
+    weight_impulse_ = 0.0;
+    weight_since_ = t;
+  }
   void save(StateArchive& archive, const std::string& prefix) const;
   void restore(const StateArchive& archive, const std::string& prefix);
 
@@ -66,6 +75,13 @@ class WallStress {
   std::array<bool, 6> present_{};
   std::array<double, 6> area_{};
   std::array<FaceSums, 6> sums_{};
+  // The floor (−1: none, or no grain may rest) and g along its outward normal; the mass at rest,
+  // and ∫ m_rest g_n dt over the interval up to weight_since_.
+  int floor_ = -1;
+  double floor_gravity_ = 0.0;
+  double resting_mass_ = 0.0;
+  double weight_impulse_ = 0.0;
+  double weight_since_ = 0.0;
 };
 
 }  // namespace granule

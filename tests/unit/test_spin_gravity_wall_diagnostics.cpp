@@ -155,7 +155,7 @@ TEST(WallDiagnostics, FaceAreaOfSpheres) {
   r.surface = {4, -1};  // the z floor
   r.impulse_on_surface = {0.7, 0.0, -6.0};
   walls.add(r);
-  const auto faces = walls.sample(0.5);
+  const auto faces = walls.sample(0.5, 0.5);
   ASSERT_TRUE(faces[4].has_value());
   EXPECT_DOUBLE_EQ(faces[4]->pressure, 6.0 / (2.0 * 3.0 * 0.5));  // the z floor is L_x · L_y
   EXPECT_DOUBLE_EQ(faces[4]->shear_stress, 0.7 / 3.0);
