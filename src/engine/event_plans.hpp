@@ -78,14 +78,18 @@ struct SurfaceHit {
 
 // A hit of surface `surface` of the boundaries (none: the grain no longer touches it), which may put
 // the grain at rest; or, struck hard enough, the grain at rest it hits moves again and the two
-// collide (physics/rest_rule.hpp).
+// collide; or a grain at rest wedging the grain against the surface moves again
+// (physics/rest_rule.hpp).
 template <int D>
 struct SurfaceHitPlan {
   SurfaceId surface{};
   Vec<D> normal{};  // from the grain into the surface
   SurfaceHit<D> hit{};
   bool comes_to_rest = false;
-  std::int32_t wakes = -1;  // the grain at rest woken, −1: none
+  // The grain at rest woken (−1: none): the struck one, which the grain then collides with; or,
+  // after the hit, one the grain would bounce into at once.
+  std::int32_t wakes = -1;
+  bool wakes_struck = false;
 };
 
 }  // namespace granule

@@ -215,6 +215,16 @@ class Simulation {
   bool rest_rule_active() const { return protocol_running_ && params_.rest.on(); }
   bool at_rest(std::int32_t i) const { return particles_[static_cast<std::size_t>(i)].partner == kAtRest; }
   bool comes_to_rest(std::int32_t i, const SurfaceHit<D>& hit) const;
+  // A grain that slides along a static support gravity presses it into (its leaving speed ever
+  // smaller, its hits ever closer) leaves each hit at least at g_n t_c, so that it stays off the
+  // support for twice the TC duration and its next hit there is outside the TC window: the TC
+  // model's micro-bounce at a sustained contact, which a grain set moving from near rest would not
+  // reach by itself.  The speed to add along −k̂ (0: none).
+  double sliding_lift(const Vector& velocity, const Vector& k_hat) const;
+  // The static support other than `struck` that grain i touches and would move into at once at
+  // `velocity`, when one of the two is a grain at rest: of the two, the grain at rest to wake (the
+  // struck one if both are).  None: no wedge.
+  SurfaceId wedging_support(std::int32_t i, const Vector& velocity, const SurfaceId& struck) const;
   // Whether grain i at r leans on a static support below its centre (itself, if at rest, excluded).
   bool leans_on_static_support(std::int32_t i, const Vector& r) const;
   void put_at_rest(std::int32_t i);

@@ -213,27 +213,45 @@ SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int kind) cons
   const Vector before = velocity_now(i);
   const auto contact = boundaries_.contact(kind, slot(i).cell(), position_now(i), before, radius_of(i), time());
   if (!contact.touching) return {{}, {}, {.particle = i}};  // nothing to apply
-  if (contact.grain && dot(before, contact.k_hat) > params_.rest.wake_speed) {
-    return {contact.surface, contact.k_hat, {.particle = i}, false, contact.surface.index};  // struck hard: it moves
+  // A grain at rest struck hard, or from below (its weight is held from below: pushed up, it is
+  // lifted), moves again and the two collide.
+  if (contact.grain && (dot(before, contact.k_hat) > params_.rest.wake_speed || dot(contact.k_hat, down()) < 0.0)) {
+    return {contact.surface, contact.k_hat, {.particle = i}, false, contact.surface.index, true};
   }
   const CollisionLaw law = contact.grain ? resting_grain_law() : surface_law(contact.restitution, contact.tangential_restitution);
   SurfaceHitPlan<D> plan{contact.surface, contact.k_hat, plan_surface_hit(i, before, contact.k_hat, law, contact.velocity)};
-  if (rest_rule_active() && comes_to_rest(i, plan.hit)) {
+  if (!rest_rule_active() || norm(contact.velocity) != 0.0) return plan;
+  SurfaceHit<D>& hit = plan.hit;
+  // Only a hit outside the TC model's window: a grain just set moving (woken, struck) bounces
+  // once more before it may rest again, which keeps rest and wake from alternating in no time.
+  if (!recent_contact(law, i, -1) && comes_to_rest(i, hit)) {
     // Perfectly inelastic: the supports take the grain's momentum, its energy is dissipated.
-    SurfaceHit<D>& hit = plan.hit;
     hit.outcome.impulse.normal = hit.side.mass * dot(before, contact.k_hat) * contact.k_hat;
     hit.outcome.impulse.tangential = hit.side.mass * before - hit.outcome.impulse.normal;
     hit.side.velocity = {};
     hit.side.spin = {};
     hit.flight = flight_through_now(i, {});
     plan.comes_to_rest = true;
+    return plan;
+  }
+  if (const double lift = sliding_lift(hit.side.velocity, contact.k_hat); lift > 0.0) {
+    hit.side.velocity = hit.side.velocity - lift * contact.k_hat;
+    hit.outcome.impulse.normal = hit.outcome.impulse.normal + hit.side.mass * lift * contact.k_hat;
+    hit.flight = flight_through_now(i, hit.side.velocity);
+  }
+  // Wedged between this surface and another static one it touches and would bounce into at once,
+  // it would rattle between them in no time: a grain at rest among the two moves again, so that
+  // the rattle is a sequence of collisions that take time.
+  if (const SurfaceId wedge = wedging_support(i, hit.side.velocity, contact.surface); wedge.found()) {
+    if (contact.grain) return {contact.surface, contact.k_hat, {.particle = i}, false, contact.surface.index, true};
+    plan.wakes = wedge.resting_grain();
   }
   return plan;
 }
 
 template <int D>
 void Simulation<D>::commit(const SurfaceHitPlan<D>& plan) {
-  if (plan.wakes >= 0) {
+  if (plan.wakes_struck) {
     wake(plan.wakes);
     commit(plan_collision(plan.hit.particle, plan.wakes));
     return;
@@ -243,6 +261,7 @@ void Simulation<D>::commit(const SurfaceHitPlan<D>& plan) {
     const SurfaceHitRecord<D> record = describe(plan);
     for (EventObserver<D>* observer : observers_) observer->on_surface_hit(record);
   }
+  if (plan.wakes >= 0) wake(plan.wakes);
   if (plan.comes_to_rest) {
     put_at_rest(plan.hit.particle);
   } else {

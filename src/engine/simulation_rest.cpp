@@ -37,6 +37,29 @@ double Simulation<D>::support_gap() const {
 }
 
 template <int D>
+double Simulation<D>::sliding_lift(const Vector& velocity, const Vector& k_hat) const {
+  Vector g;
+  for (int a = 0; a < D; ++a) g[a] = params_.gravity[static_cast<std::size_t>(a)];
+  const double pressed = dot(g, k_hat);  // gravity into the support
+  if (!(pressed > 0.0)) return 0.0;
+  const double leaving = -dot(velocity, k_hat);
+  const double least = pressed * params_.tc_duration;
+  return leaving < least ? least - leaving : 0.0;
+}
+
+template <int D>
+SurfaceId Simulation<D>::wedging_support(std::int32_t i, const Vector& velocity, const SurfaceId& struck) const {
+  SurfaceId wedge;
+  boundaries_.for_each_static_support(slot(i).cell(), position_now(i), radius_of(i), support_gap(), [&](const Vector& k_hat, SurfaceId s) {
+    const bool other = s.kind != struck.kind || s.index != struck.index;
+    if (other && !wedge.found() && dot(velocity, k_hat) > 0.0 && (s.resting_grain() >= 0 || struck.resting_grain() >= 0)) wedge = s;
+  });
+  // Between a wall and a grain at rest, the grain at rest moves.
+  if (wedge.found() && wedge.resting_grain() < 0) wedge = struck;
+  return wedge;
+}
+
+template <int D>
 bool Simulation<D>::leans_on_static_support(std::int32_t i, const Vector& r) const {
   constexpr std::size_t kMostSupports = 16;
   std::array<Vector, kMostSupports> contacts;
@@ -112,14 +135,18 @@ void Simulation<D>::wake(std::int32_t j) {
 }
 
 template Vec<2> Simulation<2>::down() const;
+template double Simulation<2>::sliding_lift(const Vec<2>&, const Vec<2>&) const;
 template double Simulation<2>::support_gap() const;
 template bool Simulation<2>::leans_on_static_support(std::int32_t, const Vec<2>&) const;
+template SurfaceId Simulation<2>::wedging_support(std::int32_t, const Vec<2>&, const SurfaceId&) const;
 template bool Simulation<2>::comes_to_rest(std::int32_t, const SurfaceHit<2>&) const;
 template void Simulation<2>::put_at_rest(std::int32_t);
 template void Simulation<2>::wake(std::int32_t);
 template Vec<3> Simulation<3>::down() const;
+template double Simulation<3>::sliding_lift(const Vec<3>&, const Vec<3>&) const;
 template double Simulation<3>::support_gap() const;
 template bool Simulation<3>::leans_on_static_support(std::int32_t, const Vec<3>&) const;
+template SurfaceId Simulation<3>::wedging_support(std::int32_t, const Vec<3>&, const SurfaceId&) const;
 template bool Simulation<3>::comes_to_rest(std::int32_t, const SurfaceHit<3>&) const;
 template void Simulation<3>::put_at_rest(std::int32_t);
 template void Simulation<3>::wake(std::int32_t);

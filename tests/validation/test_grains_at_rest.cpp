@@ -14,6 +14,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <csignal>
+#include <unistd.h>
 #include <vector>
 
 #include "observers/wall_stress.hpp"
@@ -146,7 +149,7 @@ struct SettlingBed {
     add_walls(p, 1, 0.5, -0.5);  // a floor with friction: a grain sliding on it slows down
     p.gravity[1] = -1.0;
     p.tc_duration = 1e-5;
-    if (rest) p.rest = {0.01 * std::sqrt(sigma), 0.01 * std::sqrt(sigma)};  // 1 % of √(gσ)
+    if (rest) p.rest = {0.01 * std::sqrt(sigma), 0.1 * std::sqrt(sigma)};  // 1 % and 10 % of √(gσ)
     initial = lattice_gas<D>(p, per_axis, 0.01, 7);
     for (double& y : initial.y) y = 0.5 * sigma + 0.3 * (y - 0.5 * sigma);  // the lower 1.2
     std::size_t top = 0;
@@ -179,22 +182,25 @@ void check_settling_bed() {
     void add(std::string l) { lines.push_back(l); if (lines.size() > 60) lines.erase(lines.begin()); }
   } tail;
   resting.add_observer(&tail);
+  static decltype(tail)* watched = nullptr;
+  watched = &tail;
+  std::signal(SIGALRM, [](int) { for (auto& l : watched->lines) std::printf("%s\n", l.c_str()); std::fflush(stdout); std::_Exit(3); });
+  alarm(60);
   const ParticleState start = resting.state();
   const double t_settled = 10.0;
-  for (double t = 0.25; t < t_settled; t += 0.25) {
-    if (t > 0.7) {
-      for (double u = t - 0.25; u < t; u += 1e-6) {
-        const long long before = resting.events();
-        resting.run(u, kNoLimit);
-        if (resting.events() - before > 20000) {
-          for (auto& l : tail.lines) std::printf("%s\n", l.c_str());
-          std::printf("stuck at %.9f\n", resting.time());
-          return;
-        }
-      }
-    }
+  struct Census final : EventObserver<D> {
+    std::map<int, long long> by_grain; long long coll = 0, walls = 0, rests = 0, wakes = 0, onrest = 0;
+    void on_collision(const CollisionRecord<D>& r) override { ++coll; ++by_grain[r.first]; }
+    void on_surface_hit(const SurfaceHitRecord<D>& r) override { (r.surface.kind == 7 ? onrest : walls)++; ++by_grain[r.particle]; }
+    void on_rest_change(const RestRecord<D>& r) override { (r.at_rest ? rests : wakes)++; }
+  } census;
+  resting.add_observer(&census);
+  for (double t = 0.05; t < t_settled; t += 0.05) {
+    census = Census{};
     const StopReason why = resting.run(t, kNoLimit);
-    std::printf("t %.2f events %lld at rest %lld reason %d\n", resting.time(), (long long)resting.events(), (long long)resting.grains_at_rest(), (int)why);
+    long long top = 0; int who = -1;
+    for (auto& [k, n] : census.by_grain) if (n > top) { top = n; who = k; }
+    std::printf("t %.2f events %lld at rest %lld reason %d | coll %lld walls %lld onrest %lld rests %lld wakes %lld top %d:%lld\n", resting.time(), (long long)resting.events(), (long long)resting.grains_at_rest(), (int)why, census.coll, census.walls, census.onrest, census.rests, census.wakes, who, top);
     std::fflush(stdout);
     if (why != StopReason::kTimeReached) break;
   }
