@@ -220,11 +220,11 @@ SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int kind) cons
   }
   const CollisionLaw law = contact.grain ? resting_grain_law() : surface_law(contact.restitution, contact.tangential_restitution);
   SurfaceHitPlan<D> plan{contact.surface, contact.k_hat, plan_surface_hit(i, before, contact.k_hat, law, contact.velocity)};
-  if (!rest_rule_active() || norm(contact.velocity) != 0.0) return plan;
+  if (norm(contact.velocity) != 0.0) return plan;  // a moving surface: none of the rules below
   SurfaceHit<D>& hit = plan.hit;
   // Only a hit outside the TC model's window: a grain just set moving (woken, struck) bounces
   // once more before it may rest again, which keeps rest and wake from alternating in no time.
-  if (!recent_contact(law, i, -1) && comes_to_rest(i, hit)) {
+  if (rest_rule_active() && !recent_contact(law, i, -1) && comes_to_rest(i, hit)) {
     // Perfectly inelastic: the supports take the grain's momentum, its energy is dissipated.
     hit.outcome.impulse.normal = hit.side.mass * dot(before, contact.k_hat) * contact.k_hat;
     hit.outcome.impulse.tangential = hit.side.mass * before - hit.outcome.impulse.normal;
@@ -239,6 +239,7 @@ SurfaceHitPlan<D> Simulation<D>::plan_surface_hit(std::int32_t i, int kind) cons
     hit.outcome.impulse.normal = hit.outcome.impulse.normal + hit.side.mass * lift * contact.k_hat;
     hit.flight = flight_through_now(i, hit.side.velocity);
   }
+  if (!rest_rule_active()) return plan;
   // Wedged between this surface and another static one it touches and would bounce into at once,
   // it would rattle between them in no time: a grain at rest among the two moves again, so that
   // the rattle is a sequence of collisions that take time.

@@ -41,7 +41,7 @@ double Simulation<D>::sliding_lift(const Vector& velocity, const Vector& k_hat) 
   Vector g;
   for (int a = 0; a < D; ++a) g[a] = params_.gravity[static_cast<std::size_t>(a)];
   const double pressed = dot(g, k_hat);  // gravity into the support
-  if (!(pressed > 0.0)) return 0.0;
+  if (!(pressed > 0.0) || params_.tc_duration == 0.0) return 0.0;
   const double leaving = -dot(velocity, k_hat);
   const double least = pressed * params_.tc_duration;
   return leaving < least ? least - leaving : 0.0;
