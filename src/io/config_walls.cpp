@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "io/input_ranges.hpp"
@@ -145,13 +147,23 @@ void resolve_rest(const ConfigReader& in, RunConfig& c) {
                                   "hold it against gravity, and without gravity nothing holds a grain at rest",
                                   *speed)};
   }
+  if (s.dimension == 3) {
+    throw ConfigError{fmt::format("system.rest_speed = {} is for disks (system.dimension = 2) so far: a bed of spheres "
+                                  "under the rule keeps waking itself (its grains slide off the shoulders they come to "
+                                  "rest on), and costs more events than without it",
+                                  *speed)};
+  }
   if (c.lees_edwards) {
     throw ConfigError{fmt::format("system.rest_speed = {} cannot be combined with boundary.kind = \"lees-edwards\": a grain "
                                   "at rest is a fixed support, and the sliding images would carry its images through the "
                                   "flow.  Allowed: walls (boundary.kind = \"walls\") or a periodic box",
                                   *speed)};
   }
-  s.rest = {*speed, wake.value_or(*speed)};
+  // By default a grain at rest moves again when struck hard enough to lift it by more than σ/200
+  // (u²/2g): a gentler blow only rocks it in its pocket, from which it would come to rest again.
+  double g = 0.0;
+  for (const double component : s.gravity) g += component * component;
+  s.rest = {*speed, wake.value_or(std::max(*speed, 0.1 * std::sqrt(std::sqrt(g) * s.diameter)))};
 }
 
 std::string rest_to_toml(const RunConfig& c) {

@@ -304,5 +304,22 @@ TEST(ConfigWallsGravityRoughness, SmoothPeriodicRunsWriteNoNewKey) {
   }
 }
 
+// Grains at rest (physics/rest_rule.hpp): the keys, their default and the combinations refused by name.
+TEST(ConfigRest, RestSpeedNeedsGravityAndDisksAndNoLeesEdwardsImagesAndSetsAWakeSpeed) {
+  const RunConfig c = accepted({kWalls, "system.gravity=[0, -4]", "system.diameter=0.01", "system.particles=100",
+                                "system.box=[1.0, 1.0]", "system.rest_speed=0.002"});
+  EXPECT_EQ(c.system.rest.speed, 0.002);
+  EXPECT_DOUBLE_EQ(c.system.rest.wake_speed, 0.1 * std::sqrt(4.0 * 0.01));  // lifts a grain by σ/200
+  EXPECT_EQ(accepted({kWalls, "system.gravity=[0, -1]", "system.rest_speed=0.01", "system.wake_speed=0.5"}).system.rest.wake_speed, 0.5);
+  EXPECT_FALSE(accepted({kWalls, "system.gravity=[0, -1]"}).system.rest.on());
+  expect_refused({kWalls, "system.rest_speed=0.01"}, {"system.rest_speed = 0.01", "needs system.gravity"});
+  expect_refused({kWalls, "system.gravity=[0, -1]", "system.rest_speed=0"}, {"system.rest_speed = 0", "(0, ∞)"});
+  expect_refused({kWalls, "system.gravity=[0, -1]", "system.rest_speed=-1"}, {"system.rest_speed = -1"});
+  expect_refused({kWalls, "system.gravity=[0, -1]", "system.wake_speed=0.1"}, {"system.wake_speed needs system.rest_speed"});
+  expect_refused({k3d, kWalls, "system.gravity=[0, -1, 0]", "system.rest_speed=0.01"}, {"system.rest_speed = 0.01", "disks"});
+  expect_refused({"boundary.kind=\"lees-edwards\"", "system.gravity=[-1, 0]", "system.rest_speed=0.01"},
+                 {"system.rest_speed = 0.01", "lees-edwards"});
+}
+
 }  // namespace
 }  // namespace granule
