@@ -82,7 +82,7 @@ struct SurfaceHitGap {
 };
 
 // The gap of a grain of radius `radius` in cell `cell`, at r at production time t, to `surface`
-// (for an obstacle, to the nearest the cell lists); `tolerance` as in surface_overlap; `curved`:
+// (for a round surface, to the nearest the cell lists); `tolerance` as in surface_overlap; `curved`:
 // flights are parabolas, whose obstacle search may give up short of a contact.
 template <int D>
 SurfaceHitGap surface_hit_gap(const BoxBoundaries<D>& b, int surface, std::int32_t cell, const Vec<D>& r, double radius,
@@ -106,7 +106,9 @@ SurfaceHitGap surface_hit_gap(const BoxBoundaries<D>& b, int surface, std::int32
       g.surface = {surface, round.index};
     }
   }
-  g.may_fall_short = g.gap > 0.0 && std::isfinite(g.gap) && curved;
+  // A hit of a grain at rest may find it woken since (the hit is then stale, as a collision whose
+  // partner has collided).
+  g.may_fall_short = g.gap > 0.0 && (surface == kRestingGrainSurface || (std::isfinite(g.gap) && curved));
   return g;
 }
 
