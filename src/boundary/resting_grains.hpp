@@ -32,7 +32,6 @@ class RestingGrains {
         tolerance_(round_surface_tolerance(lengths, D)),
         lists_(static_cast<std::size_t>(grid.cells())) {}
 
-  bool enabled() const { return !lists_.empty(); }
   // Grain `particle` of radius `radius`, at rest at `centre` (inside the box).
   void add(std::int32_t particle, const Vec<D>& centre, double radius) {
     for_each_listing(centre, radius, [&](std::vector<RoundSurface<D>>& list, const Vec<D>& image) {
